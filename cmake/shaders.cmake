@@ -1,0 +1,46 @@
+# One custom command per shader: glslangValidator (Vulkan 1.3) with a depfile
+# for the headers it includes, then spirv-val. The fresh modules land in
+# ${CMAKE_BINARY_DIR}/spirv and are embedded into the library; the committed
+# copies in spirv/ must match them byte for byte (tests/spirv_fresh_test).
+# `cmake --build build --target update_spirv` refreshes the committed copies.
+
+set(TIDEPOOL_SHADER_DIR ${CMAKE_SOURCE_DIR}/shaders_glsl)
+set(TIDEPOOL_SPIRV_DIR ${CMAKE_BINARY_DIR}/spirv)
+set(TIDEPOOL_COMMITTED_SPIRV_DIR ${CMAKE_SOURCE_DIR}/spirv)
+
+function(tidepool_compile_shaders)
+  file(GLOB shader_sources CONFIGURE_DEPENDS
+    ${TIDEPOOL_SHADER_DIR}/*.comp ${TIDEPOOL_SHADER_DIR}/*.vert ${TIDEPOOL_SHADER_DIR}/*.frag)
+  file(MAKE_DIRECTORY ${TIDEPOOL_SPIRV_DIR})
+  set(outputs "")
+  set(copies "")
+  foreach(src ${shader_sources})
+    get_filename_component(name ${src} NAME)
+    set(out ${TIDEPOOL_SPIRV_DIR}/${name}.spv)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -I${TIDEPOOL_SHADER_DIR}
+              --depfile ${out}.d -o ${out} ${src}
+      COMMAND ${SPIRV_VAL} --target-env vulkan1.3 ${out}
+      MAIN_DEPENDENCY ${src}
+      DEPFILE ${out}.d
+      COMMENT "glslang ${name}"
+      VERBATIM)
+    list(APPEND outputs ${out})
+    list(APPEND copies COMMAND ${CMAKE_COMMAND} -E copy_if_different ${out} ${TIDEPOOL_COMMITTED_SPIRV_DIR}/${name}.spv)
+  endforeach()
+
+  set(embedded ${CMAKE_BINARY_DIR}/generated/spirv_embedded.cpp)
+  add_custom_command(
+    OUTPUT ${embedded}
+    COMMAND ${CMAKE_COMMAND} -DSPIRV_DIR=${TIDEPOOL_SPIRV_DIR} -DOUT=${embedded}
+            -P ${CMAKE_SOURCE_DIR}/cmake/embed_spirv.cmake
+    DEPENDS ${outputs} ${CMAKE_SOURCE_DIR}/cmake/embed_spirv.cmake
+    COMMENT "Embedding SPIR-V"
+    VERBATIM)
+  set(TIDEPOOL_SPIRV_CPP ${embedded} PARENT_SCOPE)
+
+  add_custom_target(spirv DEPENDS ${outputs})
+  add_custom_target(update_spirv ${copies} DEPENDS ${outputs}
+    COMMENT "Copying fresh SPIR-V into spirv/")
+endfunction()

@@ -1,0 +1,28 @@
+// Per-frame camera and light, a uniform buffer filled in one place
+// (render/frame_uniforms.cpp) and read by every pass that needs it.
+#ifndef TP_SHARED_FRAME_H
+#define TP_SHARED_FRAME_H
+#include "shared/interop.h"
+
+TP_BEGIN
+
+struct FrameUniforms {
+  mat4 view;                   // world to camera (camera looks down -z)
+  mat4 projection;             // camera to clip, Vulkan conventions (y down, depth 0..1)
+  mat4 viewProjection;
+  mat4 inverseViewProjection;
+  vec4 cameraPosition;         // xyz world position
+  vec4 sunDirection;           // xyz unit vector towards the sun
+  vec4 sunIrradiance;          // rgb irradiance of the sun disk on a surface facing it
+  vec4 skyIrradiance;          // rgb irradiance of the sky (without sun) on an up-facing surface
+  vec4 viewport;               // width, height, 1/width, 1/height
+};
+
+TP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(tp::shader::FrameUniforms) == 4 * 64 + 5 * 16);
+static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
+#endif
+
+#endif

@@ -1,0 +1,21 @@
+// Lets one header declare a struct (and small functions) for both C++ and GLSL,
+// so the std140/std430 layout is written once. C++ side: glm types in tp::shader.
+#ifndef TP_SHARED_INTEROP_H
+#define TP_SHARED_INTEROP_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+#define TP_BEGIN        \
+  namespace tp::shader { \
+  using namespace glm;  \
+  using uint = std::uint32_t;
+#define TP_END }
+#define TP_INLINE inline
+#else
+#define TP_BEGIN
+#define TP_END
+#define TP_INLINE
+#endif
+
+#endif

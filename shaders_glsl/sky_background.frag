@@ -1,0 +1,17 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The sky behind everything: the view ray through each pixel looks up the
+// equirectangular sky texture.
+#include "shared/frame.h"
+#include "lib/equirect.glsl"
+
+layout(location = 0) in vec2 ndc;
+layout(location = 0) out vec4 color;
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform sampler2D skyTexture;
+
+void main() {
+  vec4 far = frame.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 dir = normalize(far.xyz / far.w - frame.cameraPosition.xyz);
+  color = vec4(texture(skyTexture, directionToEquirect(dir)).rgb, 1.0);
+}

@@ -1,0 +1,22 @@
+#pragma once
+#include <string>
+
+#include "gpu/context.hpp"
+
+namespace tp::app {
+
+// The Vulkan context of one command, with the CLI's reporting of validation
+// messages: echoed as they come, counted at the end.
+class GpuSession {
+ public:
+  GpuSession(bool validate, const std::string& device);
+  gpu::Context& context() { return context_; }
+  // Prints the validation count (when validating) and returns the exit code:
+  // 0, or 3 when the validation layer said anything.
+  int finish();
+
+ private:
+  gpu::Context context_;
+};
+
+}  // namespace tp::app

@@ -1,0 +1,36 @@
+// tidepool: a Vulkan renderer of an interactive water scene.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "app/render_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
+  app.set_version_flag("--version", "tidepool 0.1");
+  app.require_subcommand(1);
+  tp::app::RenderOptions renderOptions;
+  CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForVersion&) {
+    std::puts("tidepool 0.1");
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "tidepool: error: %s (see tidepool --help)\n", e.what());
+    return 2;
+  }
+  try {
+    if (render->parsed()) return tp::app::runRender(renderOptions);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tidepool: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,88 @@
+#include "app/render_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/gpu_session.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image_io.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_file.hpp"
+
+namespace tp::app {
+namespace {
+
+constexpr uint32_t kMaxSide = 16384;
+constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
+
+void printProfile(const render::RenderedFrame& frame) {
+  std::printf("%-16s %10s\n", "pass", "GPU ms");
+  double total = 0.0;
+  for (const auto& pass : frame.passes) {
+    if (std::isnan(pass.milliseconds)) {
+      std::printf("%-16s %10s\n", pass.name.c_str(), "n/a");
+    } else {
+      std::printf("%-16s %10.3f\n", pass.name.c_str(), pass.milliseconds);
+      total += pass.milliseconds;
+    }
+  }
+  std::printf("%-16s %10.3f\n", "total", total);
+}
+
+}  // namespace
+
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd = app.add_subcommand("render", "Render a frame offscreen to EXR (linear RGBA) and optionally PNG");
+  cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see README); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--width", o.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
+  cmd->add_option("--height", o.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
+  cmd->add_option("--frame", o.frame, "Frame number (the scene has no animation yet: every frame is the same)")
+      ->capture_default_str();
+  cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file)")->type_name("PATH")->capture_default_str();
+  cmd->add_option("--png", o.png, "Also write a tonemapped sRGB PNG preview here")->type_name("PATH");
+  auto* half = cmd->add_flag("--half", o.halfOutput, "Write 16-bit half EXR channels (default)");
+  auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
+  half->excludes(full);
+  cmd->add_flag("--validate", o.validate,
+                "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
+  cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
+      ->type_name("NAME");
+  cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
+  return cmd;
+}
+
+int runRender(const RenderOptions& o) {
+  if (uint64_t(o.width) * o.height > kMaxPixels) {
+    throw std::runtime_error(std::to_string(o.width) + "x" + std::to_string(o.height) + " is over the limit of " +
+                             std::to_string(kMaxPixels) + " pixels");
+  }
+  // Check every output before any work, so a bad path costs nothing and leaves nothing.
+  io::requireExtension(o.out, ".exr");
+  io::checkWritable(o.out);
+  if (!o.png.empty()) {
+    io::requireExtension(o.png, ".png");
+    io::checkWritable(o.png);
+  }
+  scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+
+  GpuSession session(o.validate, o.device);
+  render::Renderer renderer(session.context(), scene, o.width, o.height);
+  render::RenderedFrame frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty()});
+
+  io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, std::move(frame.rgba)};
+  io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
+  io::writeExr(o.out, image, o.floatOutput ? io::PixelType::Float : io::PixelType::Half, attributes);
+  std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height, o.floatOutput ? "float" : "half",
+              session.context().deviceName().c_str());
+  if (!o.png.empty()) {
+    io::writePng(o.png, frame.width, frame.height, frame.srgb);
+    std::printf("wrote %s\n", o.png.c_str());
+  }
+  if (o.profile) printProfile(frame);
+  return session.finish();
+}
+
+}  // namespace tp::app

@@ -1,0 +1,27 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace tp::app {
+
+struct RenderOptions {
+  std::string scenePath;  // empty: the built-in default scene
+  uint32_t width = 1280;
+  uint32_t height = 720;
+  uint32_t frame = 0;
+  std::string out = "render.exr";
+  std::string png;
+  bool floatOutput = false;
+  bool halfOutput = false;
+  bool validate = false;
+  std::string device;
+  bool profile = false;
+};
+
+// Adds `tidepool render` and its options to the command line.
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
+
+// Returns the process exit code; throws std::exception on failure.
+int runRender(const RenderOptions& options);
+
+}  // namespace tp::app

@@ -1,0 +1,26 @@
+#pragma once
+#include <cstring>
+#include <vector>
+
+#include "gpu/barriers.hpp"
+#include "gpu/memory.hpp"
+
+namespace tp::gpu {
+
+// Host to buffer: a memcpy where the buffer is mapped, else through a staging
+// buffer and a copy, followed by a barrier that makes it visible to all later work.
+void uploadToBuffer(const Context& ctx, const Buffer& buffer, const void* data, size_t bytes);
+
+// Buffer to host, through a readback buffer and a copy, with the transfer-to-host
+// barrier. `src` is where the buffer was last written (e.g. access::computeWrite).
+std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Access src);
+
+template <typename T>
+std::vector<T> readBufferAs(const Context& ctx, const Buffer& buffer, Access src) {
+  auto bytes = readBuffer(ctx, buffer, src);
+  std::vector<T> out(bytes.size() / sizeof(T));
+  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+  return out;
+}
+
+}  // namespace tp::gpu

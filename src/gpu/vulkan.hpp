@@ -1,0 +1,3 @@
+#pragma once
+// The one place that includes Vulkan-Hpp, so every file sees the same configuration.
+#include <vulkan/vulkan_raii.hpp>

@@ -1,0 +1,46 @@
+#include "io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace tp::io {
+namespace fs = std::filesystem;
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw std::runtime_error("empty output path");
+  fs::path target(path);
+  fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error("cannot write " + path + ": directory " + dir.string() + " does not exist");
+  if (fs::is_directory(target, ec)) throw std::runtime_error("cannot write " + path + ": it is a directory");
+  if (access(dir.c_str(), W_OK | X_OK) != 0) {
+    throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  }
+}
+
+AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
+  checkWritable(target_);
+  fs::path t(target_);
+  fs::path temp = t.parent_path() / ("." + t.stem().string() + ".tmp" + std::to_string(getpid()) + t.extension().string());
+  temp_ = temp.string();
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove(temp_, ec);
+  }
+}
+
+void AtomicFile::commit() {
+  std::error_code ec;
+  fs::rename(temp_, target_, ec);
+  if (ec) throw std::runtime_error("cannot write " + target_ + ": " + ec.message());
+  committed_ = true;
+}
+
+}  // namespace tp::io

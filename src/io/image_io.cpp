@@ -1,0 +1,100 @@
+#include "io/image_io.hpp"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+
+namespace tp::io {
+namespace {
+
+std::string oiioError(const std::string& fallback) {
+  std::string e = OIIO::geterror();
+  return e.empty() ? fallback : e;
+}
+
+// Replaces newlines so that an OpenImageIO message stays on one line.
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType, const void* data) {
+  AtomicFile file(path);
+  auto out = OIIO::ImageOutput::create(file.tempPath());
+  if (!out) throw std::runtime_error("cannot write " + path + ": " + oneLine(oiioError("no writer for this format")));
+  if (!out->open(file.tempPath(), spec) || !out->write_image(dataType, data) || !out->close()) {
+    std::string e = out->geterror();
+    throw std::runtime_error("cannot write " + path + ": " + oneLine(e.empty() ? "write failed" : e));
+  }
+  out.reset();
+  file.commit();
+}
+
+}  // namespace
+
+void requireExtension(const std::string& path, const std::string& extension) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != extension) throw std::runtime_error("output " + path + " must end in " + extension);
+}
+
+void writeExr(const std::string& path, const FloatImage& image, PixelType type, const ExrAttributes& attributes) {
+  requireExtension(path, ".exr");
+  const size_t channels = image.channels.size();
+  if (image.pixels.size() != size_t(image.width) * image.height * channels) {
+    throw std::logic_error("writeExr: pixel count does not match the size");
+  }
+  OIIO::ImageSpec spec(int(image.width), int(image.height), int(channels),
+                       type == PixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+  spec.channelnames = image.channels;
+  spec.alpha_channel = -1;
+  for (size_t c = 0; c < channels; ++c) {
+    if (image.channels[c] == "A") spec.alpha_channel = int(c);
+  }
+  spec.attribute("compression", "zip");
+  if (attributes.hasCamera) {
+    // GLM's column-major storage of M is the row-major storage of M^T, which is
+    // OpenEXR's row-vector form of the same transform.
+    spec.attribute("worldToCamera", OIIO::TypeMatrix44, &attributes.worldToCamera[0][0]);
+    spec.attribute("worldToNDC", OIIO::TypeMatrix44, &attributes.worldToNDC[0][0]);
+  }
+  writeWithOiio(path, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
+}
+
+FloatImage readImage(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("cannot read " + path + ": not a file");
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw std::runtime_error("cannot read " + path + ": " + oneLine(oiioError("unknown format")));
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1) {
+    throw std::runtime_error("cannot read " + path + ": not a 2D image");
+  }
+  FloatImage image;
+  image.width = uint32_t(spec.width);
+  image.height = uint32_t(spec.height);
+  image.channels = spec.channelnames;
+  image.pixels.resize(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+    std::string e = in->geterror();
+    throw std::runtime_error("cannot read " + path + ": " + oneLine(e.empty() ? "read failed" : e));
+  }
+  return image;
+}
+
+void writePng(const std::string& path, uint32_t width, uint32_t height, const std::vector<std::uint8_t>& rgba) {
+  requireExtension(path, ".png");
+  if (rgba.size() != size_t(width) * height * 4) throw std::logic_error("writePng: pixel count does not match the size");
+  OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  writeWithOiio(path, spec, OIIO::TypeDesc::UINT8, rgba.data());
+}
+
+}  // namespace tp::io

@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace tp::io {
+
+enum class PixelType { Half, Float };
+
+// Float channels, interleaved, rows top to bottom (EXR's order).
+struct FloatImage {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<std::string> channels;  // e.g. R G B A, or u v
+  std::vector<float> pixels;          // width * height * channels.size()
+};
+
+struct ExrAttributes {
+  bool hasCamera = false;
+  glm::mat4 worldToCamera{1.0f};  // column-vector matrices, as GLM keeps them
+  glm::mat4 worldToNDC{1.0f};
+};
+
+// Writes an OpenEXR file (zip compressed) through a temporary file renamed
+// into place. The camera matrices become the standard m44f attributes
+// worldToCamera and worldToNDC, in OpenEXR's row-vector convention.
+void writeExr(const std::string& path, const FloatImage& image, PixelType type, const ExrAttributes& attributes = {});
+
+// Reads every channel of an image OpenImageIO can read (EXR, HDR) as float.
+// Throws with the path and the reason on a missing, unreadable or truncated file.
+FloatImage readImage(const std::string& path);
+
+// Writes an 8-bit RGBA PNG (already sRGB encoded), through a temporary file.
+void writePng(const std::string& path, uint32_t width, uint32_t height, const std::vector<std::uint8_t>& rgba);
+
+// Throws unless `path` ends in `extension` (".exr", ".png"), case-insensitive.
+void requireExtension(const std::string& path, const std::string& extension);
+
+}  // namespace tp::io

@@ -1,0 +1,174 @@
+#include "render/frame_graph.hpp"
+
+#include <stdexcept>
+
+namespace tp::render {
+namespace {
+
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
+using L = vk::ImageLayout;
+
+struct UseInfo {
+  gpu::Access access;
+  L layout;
+  bool reads;
+  bool writes;
+};
+
+UseInfo info(Use use) {
+  switch (use) {
+    case Use::ComputeRead: return {{S::eComputeShader, A::eShaderStorageRead}, L::eGeneral, true, false};
+    case Use::ComputeWrite: return {{S::eComputeShader, A::eShaderStorageWrite}, L::eGeneral, false, true};
+    case Use::ComputeReadWrite:
+      return {{S::eComputeShader, A::eShaderStorageRead | A::eShaderStorageWrite}, L::eGeneral, true, true};
+    case Use::FragmentSample: return {{S::eFragmentShader, A::eShaderSampledRead}, L::eShaderReadOnlyOptimal, true, false};
+    case Use::ColorWrite: return {{S::eColorAttachmentOutput, A::eColorAttachmentWrite}, L::eColorAttachmentOptimal, false, true};
+    case Use::ColorReadWrite:
+      return {{S::eColorAttachmentOutput, A::eColorAttachmentRead | A::eColorAttachmentWrite}, L::eColorAttachmentOptimal, true, true};
+    case Use::DepthWrite:
+      return {{S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite},
+              L::eDepthAttachmentOptimal, false, true};
+    case Use::TransferRead: return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
+    case Use::TransferWrite: return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, false, true};
+  }
+  throw std::logic_error("unknown Use");
+}
+
+constexpr vk::AccessFlags2 kWriteAccess = A::eShaderStorageWrite | A::eColorAttachmentWrite |
+                                          A::eDepthStencilAttachmentWrite | A::eTransferWrite | A::eHostWrite;
+
+}  // namespace
+
+ResourceRef FrameGraph::image(std::string name, const gpu::Image& image) {
+  Resource r;
+  r.name = std::move(name);
+  r.image = image.handle();
+  r.aspect = image.aspect;
+  resources_.push_back(std::move(r));
+  return {uint32_t(resources_.size() - 1)};
+}
+
+ResourceRef FrameGraph::buffer(std::string name, const gpu::Buffer& buffer) {
+  Resource r;
+  r.name = std::move(name);
+  r.buffer = buffer.handle();
+  resources_.push_back(std::move(r));
+  return {uint32_t(resources_.size() - 1)};
+}
+
+FrameGraph::Resource& FrameGraph::at(ResourceRef ref) {
+  if (ref.index >= resources_.size()) throw std::logic_error("FrameGraph: unknown resource");
+  return resources_[ref.index];
+}
+
+void FrameGraph::pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record) {
+  for (const auto& [ref, use] : uses) {
+    const Resource& r = at(ref);
+    if (!r.image && info(use).layout != L::eGeneral && use != Use::TransferRead && use != Use::TransferWrite) {
+      throw std::logic_error("FrameGraph: pass " + name + " uses buffer " + r.name + " as an image");
+    }
+  }
+  passes_.push_back({std::move(name), std::move(uses), std::move(record)});
+}
+
+std::vector<bool> FrameGraph::needed(std::span<const ResourceRef> requested) const {
+  // Walk back from the requested resources: a pass is needed when it writes a
+  // live resource, and then everything it reads is live too.
+  std::vector<bool> live(resources_.size(), false);
+  for (ResourceRef r : requested) live.at(r.index) = true;
+  std::vector<bool> keep(passes_.size(), false);
+  for (size_t p = passes_.size(); p-- > 0;) {
+    for (const auto& [ref, use] : passes_[p].uses) {
+      if (info(use).writes && live[ref.index]) keep[p] = true;
+    }
+    if (!keep[p]) continue;
+    for (const auto& [ref, use] : passes_[p].uses) {
+      if (info(use).reads) live[ref.index] = true;
+    }
+  }
+  return keep;
+}
+
+std::vector<std::string> FrameGraph::neededPasses(std::span<const ResourceRef> requested) const {
+  std::vector<std::string> names;
+  auto keep = needed(requested);
+  for (size_t p = 0; p < passes_.size(); ++p) {
+    if (keep[p]) names.push_back(passes_[p].name);
+  }
+  return names;
+}
+
+void FrameGraph::barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarrier2>& buffers,
+                             std::vector<vk::ImageMemoryBarrier2>& images) {
+  for (const auto& [ref, use] : pass.uses) {
+    Resource& r = at(ref);
+    const UseInfo u = info(use);
+    const bool isImage = bool(r.image);
+    const bool layoutChange = isImage && r.layout != u.layout;
+    gpu::Access src = gpu::access::none;
+    L oldLayout = r.layout;
+    bool emit = false;
+    if (u.writes || layoutChange) {
+      // Write after write or read, or a layout transition: wait for the last
+      // write (and make it available) and for every read since.
+      src = {r.lastWrite.stage | r.readStages, r.lastWrite.access};
+      emit = layoutChange || src.stage != S::eNone;
+      if (u.writes && !u.reads) oldLayout = L::eUndefined;  // contents are replaced
+      r.layout = u.layout;
+      if (u.writes) {
+        r.lastWrite = {u.access.stage, u.access.access & kWriteAccess};
+      } else {
+        r.lastWrite = {u.access.stage, A::eNone};  // the transition, finished before this stage
+      }
+      r.visible = u.reads ? u.access : gpu::access::none;
+      r.readStages = u.reads ? u.access.stage : S::eNone;
+    } else {
+      // Read after write: make the write visible to this stage and access once.
+      const bool covered = (r.visible.stage & u.access.stage) == u.access.stage &&
+                           (r.visible.access & u.access.access) == u.access.access;
+      if (r.lastWrite.stage != S::eNone && !covered) {
+        src = r.lastWrite;
+        emit = true;
+        r.visible = {r.visible.stage | u.access.stage, r.visible.access | u.access.access};
+      }
+      r.readStages |= u.access.stage;
+    }
+    if (!emit) continue;
+    if (isImage) {
+      images.push_back(gpu::imageBarrier(r.image, r.aspect, src, oldLayout, u.access, u.layout));
+    } else {
+      buffers.push_back(gpu::bufferBarrier(r.buffer, src, u.access));
+    }
+  }
+}
+
+std::vector<std::string> FrameGraph::record(PassContext& context, std::span<const ResourceRef> requested,
+                                            gpu::GpuTimer* timer) {
+  const vk::raii::CommandBuffer& cmd = context.cmd;
+  std::vector<std::string> recorded;
+  auto keep = needed(requested);
+  for (size_t p = 0; p < passes_.size(); ++p) {
+    if (!keep[p]) continue;
+    std::vector<vk::BufferMemoryBarrier2> bufferBarriers;
+    std::vector<vk::ImageMemoryBarrier2> imageBarriers;
+    barriersFor(passes_[p], bufferBarriers, imageBarriers);
+    gpu::pipelineBarrier(cmd, bufferBarriers, imageBarriers);
+    uint32_t scope = timer ? timer->begin(cmd, passes_[p].name) : 0;
+    passes_[p].record(context);
+    if (timer) timer->end(cmd, scope);
+    recorded.push_back(passes_[p].name);
+  }
+  std::vector<vk::BufferMemoryBarrier2> toHost;
+  for (ResourceRef ref : requested) {
+    Resource& r = at(ref);
+    if (r.buffer && r.lastWrite.access != A::eNone) {
+      toHost.push_back(gpu::bufferBarrier(r.buffer, r.lastWrite, gpu::access::hostRead));
+      r.visible = gpu::access::hostRead;
+    }
+  }
+  gpu::pipelineBarrier(cmd, toHost);
+  return recorded;
+}
+
+}  // namespace tp::render

@@ -1,0 +1,89 @@
+#pragma once
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "gpu/barriers.hpp"
+#include "gpu/descriptors.hpp"
+#include "gpu/memory.hpp"
+#include "gpu/timer.hpp"
+
+namespace tp::render {
+
+// How a pass touches a resource. Each use fixes the stage, access and image
+// layout, so the barriers between passes follow from the declarations alone.
+enum class Use {
+  ComputeRead,       // storage buffer or storage image, read
+  ComputeWrite,      // storage buffer or storage image, fully written
+  ComputeReadWrite,  // storage buffer or storage image, updated in place
+  FragmentSample,    // sampled image in the fragment stage
+  ColorWrite,        // color attachment, cleared or fully covered
+  ColorReadWrite,    // color attachment, loaded and drawn over
+  DepthWrite,        // depth attachment, cleared, tested and written
+  TransferRead,      // source of a copy
+  TransferWrite,     // destination of a copy
+};
+
+struct ResourceRef {
+  uint32_t index = ~0u;
+};
+
+// What a pass records with: the command buffer and the descriptor sets of this submission.
+struct PassContext {
+  const vk::raii::CommandBuffer& cmd;
+  gpu::DescriptorArena& descriptors;
+};
+
+struct RecordedPass {
+  std::string name;
+  double milliseconds = 0.0;  // NaN where the device has no timestamps
+};
+
+// A frame declared as passes with their reads and writes. record() keeps only
+// the passes that something requested depends on, in declaration order, and
+// puts before each the barriers its uses imply. Resource state persists from
+// one record() to the next, so a graph declared once can record every frame.
+class FrameGraph {
+ public:
+  ResourceRef image(std::string name, const gpu::Image& image);
+  ResourceRef buffer(std::string name, const gpu::Buffer& buffer);
+
+  using Recorder = std::function<void(PassContext&)>;
+  void pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record);
+
+  // Returns the names of the passes recorded, in order. Requested buffers end
+  // with a barrier that makes them readable on the host.
+  std::vector<std::string> record(PassContext& context, std::span<const ResourceRef> requested,
+                                  gpu::GpuTimer* timer = nullptr);
+
+  // Names of the passes that record() would keep for `requested`.
+  std::vector<std::string> neededPasses(std::span<const ResourceRef> requested) const;
+
+ private:
+  struct Resource {
+    std::string name;
+    vk::Image image = nullptr;
+    vk::ImageAspectFlags aspect;
+    vk::Buffer buffer = nullptr;
+    vk::ImageLayout layout = vk::ImageLayout::eUndefined;
+    gpu::Access lastWrite = gpu::access::none;
+    vk::PipelineStageFlags2 readStages;      // stages that read since the last write
+    gpu::Access visible = gpu::access::none;  // where the last write has been made visible
+  };
+  struct Pass {
+    std::string name;
+    std::vector<std::pair<ResourceRef, Use>> uses;
+    Recorder record;
+  };
+
+  std::vector<bool> needed(std::span<const ResourceRef> requested) const;
+  void barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarrier2>& buffers,
+                   std::vector<vk::ImageMemoryBarrier2>& images);
+  Resource& at(ResourceRef ref);
+
+  std::vector<Resource> resources_;
+  std::vector<Pass> passes_;
+};
+
+}  // namespace tp::render

@@ -1,0 +1,54 @@
+#pragma once
+// The passes of the frame. Each owns its pipeline and declares itself into a
+// FrameGraph with the resources it reads and writes; the graph orders them and
+// places the barriers.
+#include "gpu/context.hpp"
+#include "gpu/pipeline.hpp"
+#include "render/frame_graph.hpp"
+#include "shared/ground.h"
+#include "shared/sky.h"
+#include "shared/tonemap.h"
+
+namespace tp::render {
+
+constexpr vk::Format kHdrFormat = vk::Format::eR32G32B32A32Sfloat;
+constexpr vk::Format kLdrFormat = vk::Format::eR8G8B8A8Unorm;
+constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+constexpr vk::Format kSkyFormat = vk::Format::eR16G16B16A16Sfloat;
+
+// Compute: the procedural sky into an equirectangular HDR texture.
+struct SkyPass {
+  explicit SkyPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& sky, const shader::SkyParams& params) const;
+  gpu::Pipeline pipeline;
+};
+
+// Graphics: the sky texture behind everything, seen through each pixel's view ray.
+struct BackgroundPass {
+  explicit BackgroundPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef skyRef,
+               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms) const;
+  gpu::Pipeline pipeline;
+};
+
+// Graphics: the checkered ground plane, depth tested.
+struct GroundPass {
+  explicit GroundPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const shader::GroundParams& params) const;
+  gpu::Pipeline pipeline;
+};
+
+// Compute: linear HDR to the 8-bit sRGB preview.
+struct TonemapPass {
+  explicit TonemapPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef hdrRef, const gpu::Image& hdr, ResourceRef ldrRef, const gpu::Image& ldr,
+               float exposure) const;
+  gpu::Pipeline pipeline;
+};
+
+// Transfer: an image copied into a buffer for the host to read.
+void declareReadback(FrameGraph& graph, const std::string& name, ResourceRef imageRef, const gpu::Image& image,
+                     ResourceRef bufferRef, const gpu::Buffer& buffer);
+
+}  // namespace tp::render

@@ -1,0 +1,113 @@
+#include "render/renderer.hpp"
+
+#include <cstring>
+
+#include "gpu/submit.hpp"
+#include "gpu/timer.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/passes.hpp"
+#include "render/sky_model.hpp"
+
+namespace tp::render {
+
+struct Renderer::Resources {
+  Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h)
+      : skyPass(ctx),
+        backgroundPass(ctx),
+        groundPass(ctx),
+        tonemapPass(ctx),
+        sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
+                                                    .minFilter = vk::Filter::eLinear,
+                                                    .addressModeU = vk::SamplerAddressMode::eRepeat,
+                                                    .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                    .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+        sky(gpu::createImage2D(ctx, {scene.sky.textureWidth, scene.sky.textureWidth / 2}, kSkyFormat,
+                               vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled, "sky texture")),
+        color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
+                                 vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
+                                     vk::ImageUsageFlagBits::eTransferSrc,
+                                 "HDR color target")),
+        depth(gpu::createImage2D(ctx, {w, h}, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                                 "depth target")),
+        ldr(gpu::createImage2D(ctx, {w, h}, kLdrFormat,
+                               vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc, "LDR preview")),
+        uniforms(gpu::createBuffer(ctx, sizeof(shader::FrameUniforms), vk::BufferUsageFlagBits::eUniformBuffer,
+                                   gpu::MemoryUse::Upload, "frame uniforms")),
+        colorReadback(gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 16, vk::BufferUsageFlagBits::eTransferDst,
+                                        gpu::MemoryUse::Readback, "HDR readback")),
+        ldrReadback(gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst,
+                                      gpu::MemoryUse::Readback, "LDR readback")),
+        descriptors(ctx) {
+    auto skyRef = graph.image("sky", sky);
+    colorRef = graph.image("color", color);
+    auto depthRef = graph.image("depth", depth);
+    auto ldrRef = graph.image("ldr", ldr);
+    colorReadbackRef = graph.buffer("color readback", colorReadback);
+    ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
+
+    const auto& g = scene.ground;
+    shader::GroundParams ground{.plane = {g.halfExtent, g.height, g.checkerSize, 0.0f},
+                                .albedoA = glm::vec4(g.albedoA, 0.0f),
+                                .albedoB = glm::vec4(g.albedoB, 0.0f)};
+    skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
+    backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
+    groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    tonemapPass.declare(graph, colorRef, color, ldrRef, ldr, scene.render.exposure);
+    declareReadback(graph, "readback hdr", colorRef, color, colorReadbackRef, colorReadback);
+    declareReadback(graph, "readback ldr", ldrRef, ldr, ldrReadbackRef, ldrReadback);
+  }
+
+  SkyPass skyPass;
+  BackgroundPass backgroundPass;
+  GroundPass groundPass;
+  TonemapPass tonemapPass;
+  vk::raii::Sampler sampler;
+  gpu::Image sky, color, depth, ldr;
+  gpu::Buffer uniforms, colorReadback, ldrReadback;
+  gpu::DescriptorArena descriptors;
+  FrameGraph graph;
+  ResourceRef colorRef, colorReadbackRef, ldrReadbackRef;
+};
+
+Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height)
+    : ctx_(ctx), scene_(scene), width_(width), height_(height),
+      res_(std::make_unique<Resources>(ctx, scene, width, height)) {}
+
+Renderer::~Renderer() = default;
+
+RenderedFrame Renderer::render(const FrameRequest& request) {
+  RenderedFrame out;
+  out.width = width_;
+  out.height = height_;
+  const shader::FrameUniforms uniforms = frameUniforms(scene_, width_, height_);
+  std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
+  out.worldToCamera = uniforms.view;
+  out.worldToNDC = uniforms.viewProjection;
+
+  std::vector<ResourceRef> requested;
+  if (request.hdr) requested.push_back(res_->colorReadbackRef);
+  if (request.ldr) requested.push_back(res_->ldrReadbackRef);
+
+  gpu::GpuTimer timer(ctx_, 16);
+  std::vector<std::string> names;
+  res_->descriptors.reset();  // the previous frame has finished: render() waits for it
+  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) {
+    timer.reset(cmd);
+    PassContext context{cmd, res_->descriptors};
+    names = res_->graph.record(context, requested, &timer);
+  }, "frame rendering");
+  for (const auto& scope : timer.read()) out.passes.push_back({scope.name, scope.milliseconds});
+
+  const size_t pixels = size_t(width_) * height_;
+  if (request.hdr) {
+    out.rgba.resize(pixels * 4);
+    std::memcpy(out.rgba.data(), res_->colorReadback.mapped, pixels * 16);
+  }
+  if (request.ldr) {
+    out.srgb.resize(pixels * 4);
+    std::memcpy(out.srgb.data(), res_->ldrReadback.mapped, pixels * 4);
+  }
+  return out;
+}
+
+}  // namespace tp::render

@@ -1,0 +1,45 @@
+#pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "gpu/context.hpp"
+#include "render/frame_graph.hpp"
+#include "scene/scene.hpp"
+
+namespace tp::render {
+
+struct FrameRequest {
+  uint32_t frame = 0;
+  bool hdr = true;   // read back the linear RGBA image
+  bool ldr = false;  // read back the tonemapped sRGB preview
+};
+
+struct RenderedFrame {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> rgba;        // linear, scene-referred RGBA; rows top to bottom
+  std::vector<std::uint8_t> srgb; // RGBA8 sRGB preview, when requested
+  std::vector<RecordedPass> passes;
+  glm::mat4 worldToCamera{1.0f};
+  glm::mat4 worldToNDC{1.0f};
+};
+
+// Renders a scene offscreen at a fixed size. The frame graph is declared once;
+// each render() records only the passes its request needs.
+class Renderer {
+ public:
+  Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height);
+  ~Renderer();
+  RenderedFrame render(const FrameRequest& request);
+
+ private:
+  struct Resources;
+  const gpu::Context& ctx_;
+  scene::Scene scene_;
+  uint32_t width_, height_;
+  std::unique_ptr<Resources> res_;
+};
+
+}  // namespace tp::render

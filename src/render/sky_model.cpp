@@ -1,0 +1,48 @@
+#include "render/sky_model.hpp"
+
+#include <glm/gtc/constants.hpp>
+
+namespace tp::render {
+
+glm::vec3 sunDirection(const scene::Sky& sky) {
+  const float elevation = glm::radians(sky.sunElevationDegrees);
+  const float azimuth = glm::radians(sky.sunAzimuthDegrees);
+  return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth)};
+}
+
+shader::SkyParams skyParams(const scene::Sky& sky) {
+  shader::SkyParams p{};
+  p.zenith = glm::vec4(sky.zenith, sky.zenithExponent);
+  p.horizon = glm::vec4(sky.horizon, sky.horizonBlend);
+  p.ground = glm::vec4(sky.ground, 0.0f);
+  p.sunDirection = glm::vec4(sunDirection(sky), std::cos(glm::radians(sky.sunAngularRadiusDegrees)));
+  p.sunRadiance = glm::vec4(sky.sunRadiance, 0.0f);
+  p.glow = glm::vec4(sky.glow, sky.glowExponent);
+  p.size = glm::uvec4(sky.textureWidth, sky.textureWidth / 2, 0, 0);
+  return p;
+}
+
+glm::vec3 sunIrradiance(const scene::Sky& sky) {
+  const float solidAngle = glm::two_pi<float>() * (1.0f - std::cos(glm::radians(sky.sunAngularRadiusDegrees)));
+  return sky.sunRadiance * solidAngle;
+}
+
+glm::vec3 skyIrradianceUp(const scene::Sky& sky) {
+  // Midpoint rule in (theta, phi) over the upper hemisphere; the sky is smooth
+  // apart from the sun disk, which is left out here and lit separately.
+  constexpr int kTheta = 128, kPhi = 256;
+  const shader::SkyParams p = skyParams(sky);
+  const double dTheta = glm::half_pi<double>() / kTheta, dPhi = glm::two_pi<double>() / kPhi;
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < kTheta; ++i) {
+    const double theta = (i + 0.5) * dTheta;
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = (j + 0.5) * dPhi;
+      glm::vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      sum += glm::dvec3(shader::skyRadiance(p, d, 0.0f)) * std::cos(theta) * std::sin(theta) * dTheta * dPhi;
+    }
+  }
+  return glm::vec3(sum);
+}
+
+}  // namespace tp::render

@@ -1,0 +1,19 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include "scene/scene.hpp"
+#include "shared/sky.h"
+
+namespace tp::render {
+
+// The one place where the scene's sky description becomes shader parameters
+// and the light the rest of the frame is lit by.
+glm::vec3 sunDirection(const scene::Sky& sky);
+shader::SkyParams skyParams(const scene::Sky& sky);
+// Irradiance of the sun disk on a surface facing it: radiance times solid angle.
+glm::vec3 sunIrradiance(const scene::Sky& sky);
+// Irradiance of the sky without the sun disk on an up-facing surface,
+// integrated numerically from the same skyRadiance the GPU evaluates.
+glm::vec3 skyIrradianceUp(const scene::Sky& sky);
+
+}  // namespace tp::render

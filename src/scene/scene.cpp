@@ -1,0 +1,57 @@
+#include "scene/scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tp::scene {
+namespace {
+
+void requireFinite(const glm::vec3& v, const char* field) {
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+    throw std::runtime_error(std::string(field) + " must be finite");
+  }
+}
+
+void requireNonNegative(const glm::vec3& v, const char* field) {
+  requireFinite(v, field);
+  if (v.x < 0.0f || v.y < 0.0f || v.z < 0.0f) throw std::runtime_error(std::string(field) + " must not be negative");
+}
+
+void requireRange(float value, float lo, float hi, const char* field) {
+  if (!(value >= lo && value <= hi)) {
+    throw std::runtime_error(std::string(field) + " = " + std::to_string(value) + " is outside [" + std::to_string(lo) +
+                             ", " + std::to_string(hi) + "]");
+  }
+}
+
+}  // namespace
+
+Scene defaultScene() { return Scene{}; }
+
+void validateScene(const Scene& s) {
+  requireFinite(s.camera.position, "camera.position");
+  requireFinite(s.camera.target, "camera.target");
+  requireFinite(s.camera.up, "camera.up");
+  validateCamera(s.camera);
+  requireRange(s.sky.sunElevationDegrees, -90.0f, 90.0f, "sky.sun_elevation");
+  requireRange(s.sky.sunAzimuthDegrees, -360.0f, 360.0f, "sky.sun_azimuth");
+  requireRange(s.sky.sunAngularRadiusDegrees, 0.01f, 45.0f, "sky.sun_angular_radius");
+  requireNonNegative(s.sky.sunRadiance, "sky.sun_radiance");
+  requireNonNegative(s.sky.zenith, "sky.zenith");
+  requireNonNegative(s.sky.horizon, "sky.horizon");
+  requireNonNegative(s.sky.ground, "sky.ground");
+  requireNonNegative(s.sky.glow, "sky.glow");
+  requireRange(s.sky.zenithExponent, 0.01f, 100.0f, "sky.zenith_exponent");
+  requireRange(s.sky.glowExponent, 1.0f, 1e5f, "sky.glow_exponent");
+  requireRange(s.sky.horizonBlend, 1e-4f, 1.0f, "sky.horizon_blend");
+  requireRange(float(s.sky.textureWidth), 16.0f, 16384.0f, "sky.texture_width");
+  requireRange(s.ground.halfExtent, 1e-3f, 1e5f, "ground.half_extent");
+  requireRange(s.ground.height, -1e4f, 1e4f, "ground.height");
+  requireRange(s.ground.checkerSize, 1e-4f, 1e4f, "ground.checker_size");
+  requireNonNegative(s.ground.albedoA, "ground.albedo_a");
+  requireNonNegative(s.ground.albedoB, "ground.albedo_b");
+  requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
+}
+
+}  // namespace tp::scene

@@ -1,0 +1,54 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include "scene/camera.hpp"
+
+namespace tp::scene {
+
+// The procedural sky, in the terms a scene file uses. render/sky_params.cpp
+// turns it into the shader's SkyParams.
+struct Sky {
+  float sunElevationDegrees = 35.0f;
+  float sunAzimuthDegrees = 60.0f;   // from +x towards +z
+  float sunAngularRadiusDegrees = 1.0f;
+  glm::vec3 sunRadiance{5000.0f, 4700.0f, 4300.0f};
+  glm::vec3 zenith{0.10f, 0.25f, 0.75f};
+  glm::vec3 horizon{0.55f, 0.65f, 0.8f};
+  glm::vec3 ground{0.25f, 0.23f, 0.2f};
+  glm::vec3 glow{1.2f, 0.9f, 0.6f};
+  float zenithExponent = 0.5f;     // shape of the horizon-to-zenith blend
+  float glowExponent = 32.0f;      // tightness of the glow around the sun
+  float horizonBlend = 0.02f;      // width of the sky-to-ground blend (sin of elevation)
+  unsigned textureWidth = 2048;    // equirectangular texture; height is half
+  bool operator==(const Sky&) const = default;
+};
+
+struct Ground {
+  float halfExtent = 100.0f;
+  float height = 0.0f;
+  float checkerSize = 1.0f;
+  glm::vec3 albedoA{0.62f, 0.60f, 0.56f};
+  glm::vec3 albedoB{0.22f, 0.22f, 0.24f};
+  bool operator==(const Ground&) const = default;
+};
+
+struct Render {
+  float exposure = 0.8f;
+  bool operator==(const Render&) const = default;
+};
+
+struct Scene {
+  Camera camera;
+  Sky sky;
+  Ground ground;
+  Render render;
+  bool operator==(const Scene&) const = default;
+};
+
+// The built-in default scene, rendered when no --scene is given.
+Scene defaultScene();
+
+// Throws with the field and the bound on the first impossible value.
+void validateScene(const Scene& scene);
+
+}  // namespace tp::scene

@@ -1,0 +1,143 @@
+#include "scene/scene_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace tp::scene {
+namespace {
+
+using nlohmann::json;
+
+// Reads the fields of one JSON object, remembering which keys were consumed
+// so that finish() can reject the rest by name.
+class ObjectReader {
+ public:
+  ObjectReader(const json& object, std::string path, const std::string& origin)
+      : object_(object), path_(std::move(path)), origin_(origin) {
+    if (!object_.is_object()) fail(path_.empty() ? "the top level" : path_, "expected an object");
+  }
+
+  void number(const char* key, float& out) {
+    if (const json* v = take(key)) {
+      if (!v->is_number()) fail(name(key), "expected a number, got " + std::string(v->type_name()));
+      out = v->get<float>();
+    }
+  }
+
+  void count(const char* key, unsigned& out) {
+    if (const json* v = take(key)) {
+      if (!v->is_number_unsigned()) fail(name(key), "expected a non-negative integer, got " + v->dump());
+      uint64_t value = v->get<uint64_t>();
+      if (value > 1u << 30) fail(name(key), "is absurdly large (" + v->dump() + ")");
+      out = unsigned(value);
+    }
+  }
+
+  void vec3(const char* key, glm::vec3& out) {
+    if (const json* v = take(key)) {
+      if (!v->is_array() || v->size() != 3) fail(name(key), "expected an array of 3 numbers");
+      for (int i = 0; i < 3; ++i) {
+        if (!(*v)[i].is_number()) fail(name(key), "expected an array of 3 numbers");
+        out[i] = (*v)[i].get<float>();
+      }
+    }
+  }
+
+  template <typename F>
+  void object(const char* key, F&& readFields) {
+    if (const json* v = take(key)) {
+      ObjectReader child(*v, name(key), origin_);
+      readFields(child);
+      child.finish();
+    }
+  }
+
+  void finish() const {
+    for (const auto& [key, value] : object_.items()) {
+      if (!seen_.count(key)) fail(name(key.c_str()), "is not a known key");
+    }
+  }
+
+ private:
+  const json* take(const char* key) {
+    seen_.insert(key);
+    auto it = object_.find(key);
+    return it == object_.end() ? nullptr : &*it;
+  }
+  std::string name(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw std::runtime_error(origin_ + ": " + where + ": " + what);
+  }
+
+  const json& object_;
+  std::string path_;
+  const std::string& origin_;
+  std::set<std::string> seen_;
+};
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
+    throw std::runtime_error(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  Scene s = defaultScene();
+  ObjectReader top(root, "", origin);
+  top.object("camera", [&](ObjectReader& r) {
+    r.vec3("position", s.camera.position);
+    r.vec3("target", s.camera.target);
+    r.vec3("up", s.camera.up);
+    r.number("fov", s.camera.fovYDegrees);
+    r.number("near", s.camera.nearPlane);
+    r.number("far", s.camera.farPlane);
+  });
+  top.object("sky", [&](ObjectReader& r) {
+    r.number("sun_elevation", s.sky.sunElevationDegrees);
+    r.number("sun_azimuth", s.sky.sunAzimuthDegrees);
+    r.number("sun_angular_radius", s.sky.sunAngularRadiusDegrees);
+    r.vec3("sun_radiance", s.sky.sunRadiance);
+    r.vec3("zenith", s.sky.zenith);
+    r.vec3("horizon", s.sky.horizon);
+    r.vec3("ground", s.sky.ground);
+    r.vec3("glow", s.sky.glow);
+    r.number("zenith_exponent", s.sky.zenithExponent);
+    r.number("glow_exponent", s.sky.glowExponent);
+    r.number("horizon_blend", s.sky.horizonBlend);
+    r.count("texture_width", s.sky.textureWidth);
+  });
+  top.object("ground", [&](ObjectReader& r) {
+    r.number("half_extent", s.ground.halfExtent);
+    r.number("height", s.ground.height);
+    r.number("checker_size", s.ground.checkerSize);
+    r.vec3("albedo_a", s.ground.albedoA);
+    r.vec3("albedo_b", s.ground.albedoB);
+  });
+  top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
+  top.finish();
+  try {
+    validateScene(s);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(origin + ": " + e.what());
+  }
+  return s;
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("cannot read scene file " + path + ": not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read scene file " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw std::runtime_error("cannot read scene file " + path);
+  return parseScene(text.str(), path);
+}
+
+}  // namespace tp::scene

@@ -1,0 +1,16 @@
+#pragma once
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace tp::scene {
+
+// Reads a JSON scene file (format in README.md, example in scenes/). Every
+// field has the default scene's value when absent; unknown keys, wrong types
+// and impossible values throw std::runtime_error naming the file and the key.
+Scene loadSceneFile(const std::string& path);
+
+// The same, from text; `origin` names the source in messages.
+Scene parseScene(const std::string& text, const std::string& origin);
+
+}  // namespace tp::scene

@@ -1,0 +1,145 @@
+// The rendered frame against answers computed independently on the CPU: the
+// ground's Lambertian shading under a sky whose irradiance is known in closed
+// form, the sky's radiance along each pixel's view ray, and the passes that a
+// request needs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+
+#include "gpu_test.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/renderer.hpp"
+#include "render/sky_model.hpp"
+
+namespace tp::test {
+namespace {
+
+constexpr uint32_t kWidth = 320, kHeight = 180;
+
+// A sky of constant radiance c (no glow, zenith = horizon) has irradiance
+// pi * c on an up-facing surface, exactly.
+scene::Scene uniformSkyScene() {
+  scene::Scene s = scene::defaultScene();
+  s.sky.zenith = s.sky.horizon = glm::vec3(0.4f, 0.5f, 0.7f);
+  s.sky.glow = glm::vec3(0.0f);
+  return s;
+}
+
+// World-space ray through the centre of pixel (x, y), rows top to bottom.
+glm::vec3 pixelRay(const shader::FrameUniforms& u, uint32_t x, uint32_t y) {
+  glm::vec2 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, (y + 0.5f) / kHeight * 2.0f - 1.0f);
+  glm::vec4 far = u.inverseViewProjection * glm::vec4(ndc, 1.0f, 1.0f);
+  return glm::normalize(glm::vec3(far) / far.w - glm::vec3(u.cameraPosition));
+}
+
+glm::vec3 pixel(const render::RenderedFrame& f, uint32_t x, uint32_t y) {
+  const float* p = &f.rgba[(size_t(y) * f.width + x) * 4];
+  return {p[0], p[1], p[2]};
+}
+
+}  // namespace
+
+using RenderTest = GpuTest;
+
+TEST_F(RenderTest, SkyIrradianceOfAUniformSkyIsPiTimesItsRadiance) {
+  auto s = uniformSkyScene();
+  glm::vec3 e = render::skyIrradianceUp(s.sky);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], glm::pi<float>() * s.sky.zenith[c], 1e-4f * e[c]);
+}
+
+TEST_F(RenderTest, GroundIsLambertianUnderSunAndUniformSky) {
+  const scene::Scene s = uniformSkyScene();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  auto frame = renderer.render({.hdr = true});
+  const auto u = render::frameUniforms(s, kWidth, kHeight);
+
+  const glm::vec3 l = render::sunDirection(s.sky);
+  const float sunSolidAngle = glm::two_pi<float>() * (1.0f - std::cos(glm::radians(s.sky.sunAngularRadiusDegrees)));
+  const glm::vec3 irradiance = s.sky.sunRadiance * sunSolidAngle * l.y + glm::pi<float>() * s.sky.zenith;
+  int checked = 0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      glm::vec3 d = pixelRay(u, x, y);
+      if (d.y >= -1e-3f) continue;
+      float t = (s.ground.height - u.cameraPosition.y) / d.y;
+      if (t > 12.0f) continue;  // near enough that the checker filter sees one square
+      glm::vec3 hit = glm::vec3(u.cameraPosition) + t * d;
+      glm::vec2 q = glm::vec2(hit.x, hit.z) / s.ground.checkerSize;
+      glm::vec2 f = q - glm::floor(q);
+      if (f.x < 0.2f || f.x > 0.8f || f.y < 0.2f || f.y > 0.8f) continue;  // away from square edges
+      bool even = (int(std::floor(q.x)) + int(std::floor(q.y))) % 2 == 0;
+      glm::vec3 albedo = even ? s.ground.albedoA : s.ground.albedoB;
+      glm::vec3 expected = albedo / glm::pi<float>() * irradiance;
+      glm::vec3 got = pixel(frame, x, y);
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], expected[c], 1e-4f * expected[c]) << x << "," << y << " channel " << c;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST_F(RenderTest, SkyPixelsShowTheSkyAlongTheirViewRay) {
+  const scene::Scene s = scene::defaultScene();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  auto frame = renderer.render({.hdr = true});
+  const auto u = render::frameUniforms(s, kWidth, kHeight);
+  const auto params = render::skyParams(s.sky);
+  const glm::vec3 sun = render::sunDirection(s.sky);
+  int checked = 0;
+  double worst = 0.0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      glm::vec3 d = pixelRay(u, x, y);
+      if (d.y < 0.05f || glm::dot(d, sun) > std::cos(glm::radians(5.0f))) continue;  // clear of horizon and sun disk
+      glm::vec3 expected = shader::skyRadiance(params, d, 1.0f);
+      glm::vec3 got = pixel(frame, x, y);
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(got[c] - expected[c]) / expected[c]));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 10000);
+  // Half-float texels (2^-11 relative) and bilinear interpolation of a smooth sky.
+  EXPECT_LT(worst, 2e-3) << "worst relative error of a sky pixel";
+}
+
+TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
+  render::Renderer renderer(ctx(), scene::defaultScene(), 64, 48);
+  auto names = [](const render::RenderedFrame& f) {
+    std::vector<std::string> n;
+    for (const auto& p : f.passes) n.push_back(p.name);
+    return n;
+  };
+  auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
+  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "readback hdr"}));
+  EXPECT_TRUE(hdrOnly.srgb.empty());
+  auto both = renderer.render({.hdr = true, .ldr = true});
+  EXPECT_EQ(names(both),
+            (std::vector<std::string>{"sky", "background", "ground", "tonemap", "readback hdr", "readback ldr"}));
+  auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
+  EXPECT_EQ(names(ldrOnly), (std::vector<std::string>{"sky", "background", "ground", "tonemap", "readback ldr"}));
+  EXPECT_EQ(both.srgb, ldrOnly.srgb);
+  EXPECT_EQ(both.rgba, hdrOnly.rgba);
+  for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
+}
+
+TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
+  render::Renderer renderer(ctx(), scene::defaultScene(), 64, 48);
+  auto f = renderer.render({.hdr = true, .ldr = true});
+  const float exposure = scene::defaultScene().render.exposure;
+  auto curve = [&](float x) {
+    x *= exposure;
+    float t = std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+    return t <= 0.0031308f ? 12.92f * t : 1.055f * std::pow(t, 1.0f / 2.4f) - 0.055f;
+  };
+  for (size_t i = 0; i < f.rgba.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) {
+      float expected = curve(f.rgba[i + c]) * 255.0f;
+      ASSERT_NEAR(float(f.srgb[i + c]), expected, 0.51f + 1e-3f * expected) << "pixel " << i / 4;
+    }
+    ASSERT_EQ(f.srgb[i + 3], 255);
+  }
+}
+
+}  // namespace tp::test

@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include "scene/scene_file.hpp"
+
+namespace tp::test {
+namespace {
+
+std::string errorOf(const std::string& text) {
+  try {
+    scene::parseScene(text, "shot.json");
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(SceneFile, AbsentFieldsKeepTheDefaults) {
+  auto s = scene::parseScene(R"({"camera": {"fov": 35, "position": [1, 2, 3]}, "ground": {"checker_size": 2}})", "x");
+  auto d = scene::defaultScene();
+  EXPECT_EQ(s.camera.fovYDegrees, 35.0f);
+  EXPECT_EQ(s.camera.position, glm::vec3(1, 2, 3));
+  EXPECT_EQ(s.camera.target, d.camera.target);
+  EXPECT_EQ(s.ground.checkerSize, 2.0f);
+  EXPECT_EQ(s.sky.sunElevationDegrees, d.sky.sunElevationDegrees);
+  EXPECT_EQ(scene::parseScene("{}", "x").camera.fovYDegrees, d.camera.fovYDegrees);
+}
+
+TEST(SceneFile, ErrorsNameTheFileAndTheKey) {
+  EXPECT_EQ(errorOf(R"({"camera": {"fvo": 35}})"), "shot.json: camera.fvo: is not a known key");
+  EXPECT_EQ(errorOf(R"({"lights": []})"), "shot.json: lights: is not a known key");
+  EXPECT_EQ(errorOf(R"({"camera": {"fov": "wide"}})"), "shot.json: camera.fov: expected a number, got string");
+  EXPECT_EQ(errorOf(R"({"camera": {"position": [1, 2]}})"), "shot.json: camera.position: expected an array of 3 numbers");
+  EXPECT_EQ(errorOf(R"({"sky": 3})"), "shot.json: sky: expected an object");
+  EXPECT_EQ(errorOf(R"([1, 2])"), "shot.json: the top level: expected an object");
+  EXPECT_EQ(errorOf(R"({"sky": {"texture_width": -5}})"), "shot.json: sky.texture_width: expected a non-negative integer, got -5");
+}
+
+TEST(SceneFile, MalformedAndTruncatedJson) {
+  EXPECT_NE(errorOf(R"({"camera": {"fov": 35)").find("shot.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf("").find("shot.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf("{\"camera\": nan}").find("not valid JSON"), std::string::npos);
+}
+
+TEST(SceneFile, ImpossibleValuesAreRefused) {
+  EXPECT_NE(errorOf(R"({"camera": {"fov": 180}})").find("camera fov"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"fov": 1e999}})").find("shot.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"near": 0}})").find("near"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"target": [0, 2, 8]}})").find("target equals its position"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})").find("parallel"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"sky": {"sun_radiance": [1, -1, 1]}})").find("sky.sun_radiance must not be negative"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"render": {"exposure": 0}})").find("render.exposure"), std::string::npos);
+}
+
+TEST(SceneFile, UnreadableFiles) {
+  EXPECT_THROW(scene::loadSceneFile("/nonexistent/scene.json"), std::runtime_error);
+  EXPECT_THROW(scene::loadSceneFile("/tmp"), std::runtime_error);
+}
+
+TEST(SceneFile, DefaultJsonSpellsOutTheBuiltInScene) {
+  EXPECT_TRUE(scene::loadSceneFile(std::string(TIDEPOOL_SOURCE_DIR) + "/scenes/default.json") == scene::defaultScene());
+}
+
+TEST(SceneFile, ExampleScenesLoad) {
+  for (const char* name : {"scenes/default.json", "scenes/low_sun.json"}) {
+    EXPECT_NO_THROW(scene::loadSceneFile(std::string(TIDEPOOL_SOURCE_DIR) + "/" + name)) << name;
+  }
+}
+
+}  // namespace tp::test
