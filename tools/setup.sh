@@ -9,6 +9,7 @@ packages=(
   glslang-tools glslang-dev spirv-tools
   libglm-dev libopenimageio-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libglfw3-dev libimgui-dev libembree-dev python3-matplotlib
 )
 
 missing=()

@@ -25,8 +25,13 @@ void checkWritable(const std::string& path) {
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
   checkWritable(target_);
   fs::path t(target_);
-  fs::path temp = t.parent_path() / ("." + t.stem().string() + ".tmp" + std::to_string(getpid()) + t.extension().string());
-  temp_ = temp.string();
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+  std::string name(".");
+  name += t.stem().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  name += t.extension().string();
+  temp_ = (t.parent_path() / name).string();
 }
 
 AtomicFile::~AtomicFile() {
