@@ -72,7 +72,7 @@ inline constexpr Access transferWrite{S::eCopy, A::eTransferWrite};
 inline constexpr Access transferRead{S::eCopy, A::eTransferRead};
 inline constexpr Access hostRead{S::eHost, A::eHostRead};
 inline constexpr Access hostWrite{S::eHost, A::eHostWrite};
-inline constexpr Access anyRead{S::eAllCommands, A::eMemoryRead};
+inline constexpr Access anyAccess{S::eAllCommands, A::eMemoryRead | A::eMemoryWrite};
 }  // namespace access
 
 }  // namespace tp::gpu

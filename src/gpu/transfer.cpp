@@ -16,7 +16,7 @@ void uploadToBuffer(const Context& ctx, const Buffer& buffer, const void* data, 
   submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
     cmd.copyBuffer(staging.handle(), buffer.handle(), vk::BufferCopy{0, 0, bytes});
     // Later submissions come later in submission order, so this covers them.
-    auto after = bufferBarrier(buffer.handle(), access::transferWrite, access::anyRead);
+    auto after = bufferBarrier(buffer.handle(), access::transferWrite, access::anyAccess);
     pipelineBarrier(cmd, std::span(&after, 1));
   }, "buffer upload");
 }

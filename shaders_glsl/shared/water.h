@@ -1,0 +1,98 @@
+// The heightfield water: the per-cell state (also the water mesh's vertex
+// data) and the push constants of the simulation shaders, declared once for
+// C++ and GLSL. Numerics: ../shared/DESIGN.md, "Numerics of the water".
+#ifndef TP_SHARED_WATER_H
+#define TP_SHARED_WATER_H
+#include "shared/interop.h"
+
+TP_BEGIN
+
+// One cell, one std430 vec4: x and z are the cell centre ((i+1/2)h, (j+1/2)h),
+// u the height, v the vertical velocity. Cell (i, j) is element j*n + i.
+struct WaterCell {
+  float x;
+  float u;
+  float z;
+  float v;
+};
+
+#define TP_WATER_BOUNDARY_CLAMP 0u
+#define TP_WATER_BOUNDARY_WRAP 1u
+#define TP_WATER_SCHEME_SYMPLECTIC 0u
+#define TP_WATER_SCHEME_EXPLICIT 1u
+
+// Push constants of water_step.comp and water_step_tiled.comp.
+struct WaterStepParams {
+  uint n;            // grid side (n x n cells)
+  uint boundary;     // TP_WATER_BOUNDARY_*
+  uint scheme;       // TP_WATER_SCHEME_*
+  uint steps;        // steps this dispatch takes (tiled shader: at most its halo)
+  float dt;          // seconds per step
+  float waveFactor;  // dt * c^2 / h^2
+  float damping;     // exp(-gamma * dt), the per-step velocity factor
+  float maxOffset;   // maxSlope * h: bound on u minus its 4-neighbour average; <= 0: off
+};
+
+// Push constants of water_drop.comp: adds amplitude * (1 + cos(pi r / radius)) / 2
+// to u within radius of the centre.
+struct WaterDropParams {
+  uint n;
+  float h;
+  float radius;
+  float amplitude;
+  vec2 center;  // world x, z
+  vec2 pad;
+};
+
+// Push constants of water_sphere.comp: a sphere moving from one centre to
+// another pushes water out and lets it back, column by column: u changes by
+// the length of the sphere's vertical chord below the rest level that it
+// leaves minus the length it enters.
+struct WaterSphereParams {
+  vec4 oldCenter;  // xyz, w: radius
+  vec4 newCenter;  // xyz, w: rest level of the water surface
+  uint n;
+  float h;
+  vec2 pad;
+};
+
+// Push constants of water_stats.comp.
+struct WaterStatsParams {
+  uint n;
+  uint boundary;
+  float c2;          // c^2
+  float h;
+  float dt;
+  float pad0;
+  vec2 pad1;
+};
+
+// One workgroup's partial statistics, summed on the host in double.
+struct WaterStatsPartial {
+  float maxAbsU;
+  float maxAbsV;
+  float sumU;        // volume / h^2
+  float energy;      // the symplectic scheme's conserved energy, per unit area
+  uint nonFinite;    // count of NaN or infinite u or v
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+TP_END
+
+#ifdef __cplusplus
+#include <cstddef>
+static_assert(sizeof(tp::shader::WaterCell) == 16);
+static_assert(offsetof(tp::shader::WaterCell, x) == 0);
+static_assert(offsetof(tp::shader::WaterCell, u) == 4);
+static_assert(offsetof(tp::shader::WaterCell, z) == 8);
+static_assert(offsetof(tp::shader::WaterCell, v) == 12);
+static_assert(sizeof(tp::shader::WaterStepParams) == 32);
+static_assert(sizeof(tp::shader::WaterDropParams) == 32);
+static_assert(sizeof(tp::shader::WaterSphereParams) == 48);
+static_assert(sizeof(tp::shader::WaterStatsParams) == 32);
+static_assert(sizeof(tp::shader::WaterStatsPartial) == 32);
+#endif
+
+#endif

@@ -1,0 +1,67 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Health statistics of the water state, one partial per 16x16 workgroup
+// (a tree reduction in shared memory); the host adds the partials in double.
+#include "lib/water_update.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+const uint GROUP = 256;
+layout(binding = 0) readonly buffer State { WaterCell cells[]; };
+layout(binding = 1) writeonly buffer Partials { WaterStatsPartial partials[]; };
+layout(push_constant) uniform Push { WaterStatsParams params; };
+
+shared float sMaxU[GROUP];
+shared float sMaxV[GROUP];
+shared float sSumU[GROUP];
+shared float sEnergy[GROUP];
+shared uint sNonFinite[GROUP];
+
+float heightAt(int i, int j) {
+  int n = int(params.n);
+  return cells[waterNeighbour(j, n, params.boundary) * n + waterNeighbour(i, n, params.boundary)].u;
+}
+
+void main() {
+  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  const int n = int(params.n);
+  const uint t = gl_LocalInvocationIndex;
+  float maxU = 0.0, maxV = 0.0, sumU = 0.0, energy = 0.0;
+  uint nonFinite = 0u;
+  if (p.x < n && p.y < n) {
+    const WaterCell c = cells[p.y * n + p.x];
+    if (isnan(c.u) || isinf(c.u) || isnan(c.v) || isinf(c.v)) {
+      nonFinite = 1u;
+    } else {
+      const float uW = heightAt(p.x - 1, p.y), uE = heightAt(p.x + 1, p.y);
+      const float uS = heightAt(p.x, p.y - 1), uN = heightAt(p.x, p.y + 1);
+      maxU = abs(c.u);
+      maxV = abs(c.v);
+      sumU = c.u;
+      // The energy the symplectic scheme conserves exactly (without damping):
+      // kinetic + potential over the east and north edges + the dt cross term.
+      const float dE = c.u - uE, dN = c.u - uN;
+      const float laplacian = ((uW + uE) + (uS + uN) - 4.0 * c.u) / (params.h * params.h);
+      energy = 0.5 * c.v * c.v + 0.5 * params.c2 * (dE * dE + dN * dN) / (params.h * params.h) +
+               0.5 * params.dt * params.c2 * c.v * laplacian;
+    }
+  }
+  sMaxU[t] = maxU;
+  sMaxV[t] = maxV;
+  sSumU[t] = sumU;
+  sEnergy[t] = energy;
+  sNonFinite[t] = nonFinite;
+  for (uint stride = GROUP / 2; stride > 0; stride /= 2) {
+    barrier();
+    if (t < stride) {
+      sMaxU[t] = max(sMaxU[t], sMaxU[t + stride]);
+      sMaxV[t] = max(sMaxV[t], sMaxV[t + stride]);
+      sSumU[t] += sSumU[t + stride];
+      sEnergy[t] += sEnergy[t + stride];
+      sNonFinite[t] += sNonFinite[t + stride];
+    }
+  }
+  if (t == 0) {
+    const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    partials[group] = WaterStatsPartial(sMaxU[0], sMaxV[0], sSumU[0], sEnergy[0], sNonFinite[0], 0u, 0u, 0u);
+  }
+}

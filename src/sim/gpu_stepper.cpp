@@ -1,0 +1,204 @@
+#include "sim/gpu_stepper.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "gpu/barriers.hpp"
+#include "gpu/submit.hpp"
+#include "gpu/transfer.hpp"
+
+namespace tp::sim {
+namespace {
+
+constexpr uint32_t kTile = 32;  // water_step_tiled.comp's local size
+constexpr uint32_t kGroup = 16; // the 16x16 local size of the other water shaders
+
+shader::WaterStepParams stepParams(const WaterParams& p, double dt, uint32_t steps) {
+  const double h = p.h();
+  return shader::WaterStepParams{
+      .n = p.n,
+      .boundary = p.boundary == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
+      .scheme = p.scheme == Scheme::Explicit ? TP_WATER_SCHEME_EXPLICIT : TP_WATER_SCHEME_SYMPLECTIC,
+      .steps = steps,
+      .dt = float(dt),
+      .waveFactor = float(dt * p.waveSpeed * p.waveSpeed / (h * h)),
+      .damping = float(std::exp(-p.damping * dt)),
+      .maxOffset = float(p.maxSlope * h),
+  };
+}
+
+gpu::Buffer stateBuffer(const gpu::Context& ctx, uint32_t n, const char* what) {
+  return gpu::createBuffer(ctx, vk::DeviceSize(n) * n * sizeof(shader::WaterCell),
+                           vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eVertexBuffer |
+                               vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst,
+                           gpu::MemoryUse::Device, what);
+}
+
+uint32_t groupsPerSide(uint32_t n) { return (n + kGroup - 1) / kGroup; }
+
+}  // namespace
+
+GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
+                       StepKernel kernel, uint32_t halo)
+    : ctx_(ctx), params_(params), kernel_(kernel), halo_(halo) {
+  params_.n = initial.n;
+  validate(params_);
+  if (halo < 1 || halo > kMaxHalo) {
+    throw std::runtime_error("tiled water halo " + std::to_string(halo) + " is outside 1.." + std::to_string(kMaxHalo));
+  }
+  const uint32_t n = params_.n;
+  stepOne_ = gpu::createComputePipeline(ctx, "water_step.comp", sizeof(shader::WaterStepParams));
+  stepTiled_ = gpu::createComputePipeline(ctx, "water_step_tiled.comp", sizeof(shader::WaterStepParams),
+                                          gpu::Specialization().set(0, int32_t(halo)));
+  dropPipeline_ = gpu::createComputePipeline(ctx, "water_drop.comp", sizeof(shader::WaterDropParams));
+  spherePipeline_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams));
+  statsPipeline_ = gpu::createComputePipeline(ctx, "water_stats.comp", sizeof(shader::WaterStatsParams));
+  const std::string grid = std::to_string(n) + "x" + std::to_string(n) + " water state";
+  buffers_[0] = stateBuffer(ctx, n, grid.c_str());
+  buffers_[1] = stateBuffer(ctx, n, grid.c_str());
+  partials_ = gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
+                                vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
+  auto cells = toCells(initial, params_.extent);
+  gpu::uploadToBuffer(ctx, buffers_[0], cells.data(), cells.size() * sizeof(cells[0]));
+  // The second buffer's x and z never change; give it the same contents so
+  // that it is never read uninitialised, whichever kernel runs.
+  gpu::uploadToBuffer(ctx, buffers_[1], cells.data(), cells.size() * sizeof(cells[0]));
+}
+
+void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
+  // Ping-pong: the next pass reads what the last wrote and overwrites what it
+  // read. One global barrier from compute writes to compute reads and writes is
+  // the smallest that covers both.
+  if (pendingWrite_) {
+    gpu::stageBarrier(cmd, gpu::access::computeWrite,
+                      {vk::PipelineStageFlagBits2::eComputeShader,
+                       vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite});
+  }
+  pendingWrite_ = true;
+}
+
+uint64_t GpuStepper::dispatchesFor(uint64_t steps) const {
+  return kernel_ == StepKernel::Tiled ? (steps + halo_ - 1) / halo_ : steps;
+}
+
+void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, uint64_t steps,
+                             double dt) {
+  checkStable(params_, dt);
+  const uint32_t n = params_.n;
+  const uint32_t inner = kTile - 2 * halo_;
+  for (uint64_t done = 0; done < steps;) {
+    const uint32_t k = kernel_ == StepKernel::Tiled ? uint32_t(std::min<uint64_t>(halo_, steps - done)) : 1u;
+    const gpu::Pipeline& pipeline = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
+    beforeCompute(cmd);
+    gpu::bindPipeline(cmd, pipeline, stepParams(params_, dt, k));
+    gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).storageBuffer(1, buffers_[1 - current_]).bind(
+        cmd, pipeline, arena);
+    if (kernel_ == StepKernel::Tiled) {
+      const uint32_t groups = (n + inner - 1) / inner;
+      cmd.dispatch(groups, groups, 1);
+    } else {
+      gpu::dispatchCovering(cmd, pipeline, n, n);
+    }
+    current_ = 1 - current_;
+    done += k;
+  }
+}
+
+void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec2 center,
+                            float radius, float amplitude) {
+  if (!(radius > 0.0f) || !std::isfinite(amplitude)) throw std::runtime_error("a drop needs a positive radius and a finite amplitude");
+  beforeCompute(cmd);
+  shader::WaterDropParams p{.n = params_.n, .h = float(params_.h()), .radius = radius, .amplitude = amplitude,
+                            .center = center, .pad = {}};
+  gpu::bindPipeline(cmd, dropPipeline_, p);
+  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).bind(cmd, dropPipeline_, arena);
+  gpu::dispatchCovering(cmd, dropPipeline_, params_.n, params_.n);
+}
+
+void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec3 from,
+                                  glm::vec3 to, float radius, float restLevel) {
+  beforeCompute(cmd);
+  shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius), .newCenter = glm::vec4(to, restLevel),
+                              .n = params_.n, .h = float(params_.h()), .pad = {}};
+  gpu::bindPipeline(cmd, spherePipeline_, p);
+  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).bind(cmd, spherePipeline_, arena);
+  gpu::dispatchCovering(cmd, spherePipeline_, params_.n, params_.n);
+}
+
+void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, double dt) {
+  beforeCompute(cmd);
+  shader::WaterStatsParams p{.n = params_.n,
+                             .boundary = params_.boundary == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
+                             .c2 = float(params_.waveSpeed * params_.waveSpeed),
+                             .h = float(params_.h()),
+                             .dt = float(dt),
+                             .pad0 = 0.0f,
+                             .pad1 = {}};
+  gpu::bindPipeline(cmd, statsPipeline_, p);
+  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).storageBuffer(1, partials_).bind(cmd, statsPipeline_, arena);
+  gpu::dispatchCovering(cmd, statsPipeline_, params_.n, params_.n);
+  auto toHost = gpu::bufferBarrier(partials_.handle(), gpu::access::computeWrite, gpu::access::hostRead);
+  gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
+  statsH_ = params_.h();
+}
+
+WaterStats GpuStepper::readStats() const {
+  const size_t groups = size_t(groupsPerSide(params_.n)) * groupsPerSide(params_.n);
+  std::vector<shader::WaterStatsPartial> partials(groups);
+  std::memcpy(partials.data(), partials_.mapped, groups * sizeof(shader::WaterStatsPartial));
+  WaterStats s;
+  const double area = statsH_ * statsH_;
+  for (const auto& p : partials) {
+    s.maxAbsU = std::max(s.maxAbsU, double(p.maxAbsU));
+    s.maxAbsV = std::max(s.maxAbsV, double(p.maxAbsV));
+    s.volume += double(p.sumU) * area;
+    s.energy += double(p.energy) * area;
+    s.nonFinite += p.nonFinite;
+  }
+  return s;
+}
+
+void GpuStepper::submit(const std::function<void(const vk::raii::CommandBuffer&, gpu::DescriptorArena&)>& record,
+                        const char* what) {
+  gpu::DescriptorArena arena(ctx_, 4096);
+  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { record(cmd, arena); }, what);
+}
+
+void GpuStepper::step(uint64_t steps, double dt) {
+  // Bounded command buffers: a long run is split so that no single submission
+  // holds an unbounded number of dispatches.
+  constexpr uint64_t kDispatchesPerSubmit = 2048;
+  const uint64_t stepsPerSubmit = kernel_ == StepKernel::Tiled ? kDispatchesPerSubmit * halo_ : kDispatchesPerSubmit;
+  for (uint64_t done = 0; done < steps;) {
+    const uint64_t k = std::min(stepsPerSubmit, steps - done);
+    submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) { recordSteps(cmd, arena, k, dt); },
+           "water simulation");
+    done += k;
+  }
+}
+
+void GpuStepper::drop(glm::vec2 center, float radius, float amplitude) {
+  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) {
+    recordDrop(cmd, arena, center, radius, amplitude);
+  }, "water drop");
+}
+
+void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel) {
+  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) {
+    recordSphereMove(cmd, arena, from, to, radius, restLevel);
+  }, "sphere displacement");
+}
+
+WaterStats GpuStepper::stats(double dt) {
+  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) { recordStats(cmd, arena, dt); },
+         "water statistics");
+  return readStats();
+}
+
+WaterState GpuStepper::download() const {
+  auto cells = gpu::readBufferAs<shader::WaterCell>(ctx_, current(), gpu::access::computeWrite);
+  return fromCells(cells, params_.n);
+}
+
+}  // namespace tp::sim

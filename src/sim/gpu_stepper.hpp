@@ -1,0 +1,70 @@
+#pragma once
+#include <glm/glm.hpp>
+#include <functional>
+#include <memory>
+
+#include "gpu/context.hpp"
+#include "gpu/descriptors.hpp"
+#include "gpu/memory.hpp"
+#include "gpu/pipeline.hpp"
+#include "sim/water_params.hpp"
+#include "sim/water_state.hpp"
+#include "sim/water_stats.hpp"
+
+namespace tp::sim {
+
+enum class StepKernel {
+  OnePerDispatch,  // water_step.comp: one step per dispatch
+  Tiled,           // water_step_tiled.comp: up to `halo` steps per dispatch in shared memory
+};
+
+// The water on the GPU: two state buffers (ping-pong) and the compute passes
+// that step, disturb and measure it. record*() add commands with the exact
+// compute-to-compute barriers between them; the plain methods submit and wait.
+class GpuStepper {
+ public:
+  static constexpr uint32_t kMaxHalo = 15;  // the tiled shader's 32-cell tile keeps an inner tile of 2
+
+  GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
+             StepKernel kernel = StepKernel::Tiled, uint32_t halo = 4);
+
+  void recordSteps(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, uint64_t steps, double dt);
+  void recordDrop(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec2 center, float radius,
+                  float amplitude);
+  // Moves a sphere of `radius` from `from` to `to`, displacing water below `restLevel`.
+  void recordSphereMove(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec3 from, glm::vec3 to,
+                        float radius, float restLevel);
+  // Computes the per-workgroup statistics; readStats() after the submission finished.
+  void recordStats(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, double dt);
+  WaterStats readStats() const;
+
+  void step(uint64_t steps, double dt);
+  void drop(glm::vec2 center, float radius, float amplitude);
+  void moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel);
+  WaterStats stats(double dt);
+  WaterState download() const;
+
+  const gpu::Buffer& current() const { return buffers_[current_]; }
+  const WaterParams& params() const { return params_; }
+  StepKernel kernel() const { return kernel_; }
+  uint32_t halo() const { return halo_; }
+  uint64_t dispatchesFor(uint64_t steps) const;
+
+ private:
+  void beforeCompute(const vk::raii::CommandBuffer& cmd);
+  void submit(const std::function<void(const vk::raii::CommandBuffer&, gpu::DescriptorArena&)>& record,
+              const char* what);
+
+  const gpu::Context& ctx_;
+  WaterParams params_;
+  StepKernel kernel_;
+  uint32_t halo_;
+  gpu::Pipeline stepOne_, stepTiled_, dropPipeline_, spherePipeline_, statsPipeline_;
+  gpu::Buffer buffers_[2];
+  gpu::Buffer partials_;
+  uint32_t current_ = 0;
+  bool pendingWrite_ = false;  // a compute write that later compute work must wait for
+  double statsH_ = 0.0;
+};
+
+}  // namespace tp::sim

@@ -1,0 +1,79 @@
+#include "sim/reference_sim.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/grid_index.hpp"
+
+namespace tp::sim {
+
+ReferenceSim::ReferenceSim(const WaterParams& params, const WaterState& initial)
+    : p_(params), u_(initial.u.begin(), initial.u.end()), v_(initial.v.begin(), initial.v.end()),
+      nextU_(u_.size()), nextV_(v_.size()) {
+  p_.n = initial.n;
+}
+
+double ReferenceSim::heightAt(long i, long j) const { return u_[cellIndex(i, j, p_.n, p_.boundary)]; }
+
+void ReferenceSim::step(double dt) {
+  const long n = p_.n;
+  const double h = p_.h();
+  const double decay = std::exp(-p_.damping * dt);
+  const double c2 = p_.waveSpeed * p_.waveSpeed;
+  const double maxOffset = p_.maxSlope * h;
+  for (long j = 0; j < n; ++j) {
+    for (long i = 0; i < n; ++i) {
+      const size_t k = size_t(j) * n + size_t(i);
+      const double neighbours = heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1);
+      const double laplacian = (neighbours - 4.0 * u_[k]) / (h * h);
+      const double v = decay * (v_[k] + dt * c2 * laplacian);
+      double u = u_[k] + dt * (p_.scheme == Scheme::Explicit ? v_[k] : v);
+      if (maxOffset > 0.0) {
+        const double average = 0.25 * neighbours;
+        u = average + std::clamp(u - average, -maxOffset, maxOffset);
+      }
+      nextU_[k] = u;
+      nextV_[k] = v;
+    }
+  }
+  std::swap(u_, nextU_);
+  std::swap(v_, nextV_);
+}
+
+void ReferenceSim::steps(uint64_t count, double dt) {
+  for (uint64_t s = 0; s < count; ++s) step(dt);
+}
+
+WaterStats ReferenceSim::stats(double dt) const {
+  WaterStats s;
+  const long n = p_.n;
+  const double h = p_.h(), c2 = p_.waveSpeed * p_.waveSpeed;
+  for (long j = 0; j < n; ++j) {
+    for (long i = 0; i < n; ++i) {
+      const size_t k = size_t(j) * n + size_t(i);
+      const double u = u_[k], v = v_[k];
+      if (!std::isfinite(u) || !std::isfinite(v)) {
+        ++s.nonFinite;
+        continue;
+      }
+      s.maxAbsU = std::max(s.maxAbsU, std::abs(u));
+      s.maxAbsV = std::max(s.maxAbsV, std::abs(v));
+      s.volume += u * h * h;
+      const double dE = u - heightAt(i + 1, j), dN = u - heightAt(i, j + 1);
+      const double laplacian = (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1) - 4.0 * u) / (h * h);
+      s.energy += (0.5 * v * v + 0.5 * c2 * (dE * dE + dN * dN) / (h * h) + 0.5 * dt * c2 * v * laplacian) * h * h;
+    }
+  }
+  return s;
+}
+
+WaterState ReferenceSim::state() const {
+  WaterState s = flatState(p_.n);
+  for (size_t k = 0; k < u_.size(); ++k) {
+    s.u[k] = float(u_[k]);
+    s.v[k] = float(v_[k]);
+  }
+  return s;
+}
+
+}  // namespace tp::sim

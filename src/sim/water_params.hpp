@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace tp::sim {
+
+enum class Boundary { Clamp, Wrap };
+enum class Scheme { Symplectic, Explicit };
+
+// The 2D bound on the Courant number lambda = c dt / h: the checkerboard mode
+// is stable only for lambda <= 1/sqrt(2) (DESIGN.md, "Numerics of the water").
+inline constexpr double kStabilityBound = 0.70710678118654752440;
+
+struct WaterParams {
+  uint32_t n = 256;          // cells per side
+  double extent = 2.0;       // L, metres per side; h = L / n
+  double waveSpeed = 0.5;    // c, m/s
+  double damping = 0.0;      // gamma, 1/s (a rate, so it does not change with dt)
+  Boundary boundary = Boundary::Clamp;
+  double maxSlope = 0.0;     // > 0: |u - 4-neighbour average| <= maxSlope * h after each step
+  Scheme scheme = Scheme::Symplectic;
+
+  double h() const { return extent / n; }
+  double lambda(double dt) const { return waveSpeed * dt / h(); }
+};
+
+// Throws with the name and bound of the first impossible parameter.
+void validate(const WaterParams& p);
+
+// Throws when lambda(dt) exceeds the stability bound, naming lambda and the bound.
+void checkStable(const WaterParams& p, double dt);
+
+// The fewest equal substeps of a frame of `frameTime` seconds that keep
+// lambda <= safety / sqrt(2).
+uint32_t substepsFor(const WaterParams& p, double frameTime, double safety = 0.9);
+
+std::string toString(Boundary b);
+std::string toString(Scheme s);
+Boundary parseBoundary(const std::string& s);  // throws on anything but clamp|wrap
+Scheme parseScheme(const std::string& s);      // throws on anything but symplectic|explicit
+
+}  // namespace tp::sim
