@@ -40,7 +40,7 @@ void main() {
       // The energy the symplectic scheme conserves exactly (without damping):
       // kinetic + potential over the east and north edges + the dt cross term.
       const float dE = c.u - uE, dN = c.u - uN;
-      const float laplacian = ((uW + uE) + (uS + uN) - 4.0 * c.u) / (params.h * params.h);
+      const float laplacian = (((uW - c.u) + (uE - c.u)) + ((uS - c.u) + (uN - c.u))) / (params.h * params.h);
       energy = 0.5 * c.v * c.v + 0.5 * params.c2 * (dE * dE + dN * dN) / (params.h * params.h) +
                0.5 * params.dt * params.c2 * c.v * laplacian;
     }

@@ -7,16 +7,23 @@
 
 // New (u, v) of a cell from its height u, velocity v and the heights of its
 // west, east, south and north neighbours (ghost cells already resolved).
+//
+// The Laplacian is a sum of differences, not (sum of neighbours) - 4u: heights
+// sit on a rest level (around 1, say) far above the waves, and the differences
+// of nearby heights are exact in float (Sterbenz), where the sum of four
+// heights would round at the level's ulp and feed that noise into v, whose sum
+// then random-walks and the volume with it.
 vec2 waterUpdate(WaterStepParams p, float u, float v, float uW, float uE, float uS, float uN) {
-  precise float neighbours = ((uW + uE) + (uS + uN));
-  precise float laplacianH2 = neighbours - 4.0 * u;
+  precise float laplacianH2 = ((uW - u) + (uE - u)) + ((uS - u) + (uN - u));
   precise float vNew = p.damping * (v + p.waveFactor * laplacianH2);
   // Symplectic Euler moves u with the new velocity; the literal forward Euler
   // (kept to show that it is unstable) with the old one.
   precise float uNew = u + p.dt * (p.scheme == TP_WATER_SCHEME_EXPLICIT ? v : vNew);
   if (p.maxOffset > 0.0) {
-    precise float average = 0.25 * neighbours;
-    uNew = average + clamp(uNew - average, -p.maxOffset, p.maxOffset);
+    // Offset from the 4-neighbour average, limited to maxSlope * h; cells within
+    // the limit keep their value to the bit.
+    precise float offset = (uNew - u) - 0.25 * laplacianH2;
+    if (abs(offset) > p.maxOffset) uNew = u + (0.25 * laplacianH2 + sign(offset) * p.maxOffset);
   }
   return vec2(uNew, vNew);
 }

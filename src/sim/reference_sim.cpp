@@ -24,14 +24,11 @@ void ReferenceSim::step(double dt) {
   for (long j = 0; j < n; ++j) {
     for (long i = 0; i < n; ++i) {
       const size_t k = size_t(j) * n + size_t(i);
-      const double neighbours = heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1);
-      const double laplacian = (neighbours - 4.0 * u_[k]) / (h * h);
+      const double average = 0.25 * (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1));
+      const double laplacian = 4.0 * (average - u_[k]) / (h * h);
       const double v = decay * (v_[k] + dt * c2 * laplacian);
       double u = u_[k] + dt * (p_.scheme == Scheme::Explicit ? v_[k] : v);
-      if (maxOffset > 0.0) {
-        const double average = 0.25 * neighbours;
-        u = average + std::clamp(u - average, -maxOffset, maxOffset);
-      }
+      if (maxOffset > 0.0) u = average + std::clamp(u - average, -maxOffset, maxOffset);
       nextU_[k] = u;
       nextV_[k] = v;
     }
