@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "app/bench_command.hpp"
 #include "app/render_command.hpp"
 
 int main(int argc, char** argv) {
@@ -11,6 +12,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   tp::app::RenderOptions renderOptions;
   CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
+  tp::app::BenchOptions benchOptions;
+  CLI::App* bench = tp::app::addBenchCommand(app, benchOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -28,6 +31,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (render->parsed()) return tp::app::runRender(renderOptions);
+    if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tidepool: error: %s\n", e.what());
     return 1;

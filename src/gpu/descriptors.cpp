@@ -59,7 +59,7 @@ vk::DescriptorSet DescriptorArena::allocate(vk::DescriptorSetLayout layout) {
 
 void DescriptorArena::reset() { pool_.reset(); }
 
-void DescriptorWrites::bind(const vk::raii::CommandBuffer& cmd, const Pipeline& pipeline, DescriptorArena& arena) {
+vk::DescriptorSet DescriptorWrites::allocate(const Pipeline& pipeline, DescriptorArena& arena) {
   for (const auto& b : pipeline.bindings) {
     bool written = false;
     for (const auto& w : writes_) {
@@ -72,10 +72,18 @@ void DescriptorWrites::bind(const vk::raii::CommandBuffer& cmd, const Pipeline& 
     }
     if (!written) throw std::runtime_error(pipeline.name + ": binding " + std::to_string(b.binding) + " is not written");
   }
-  if (writes_.empty()) return;
   vk::DescriptorSet set = arena.allocate(*pipeline.setLayout);
   for (auto& w : writes_) w.dstSet = set;
-  cmd.getDevice().updateDescriptorSets(writes_, nullptr);
+  if (!writes_.empty()) arena.device().updateDescriptorSets(writes_, nullptr);
+  return set;
+}
+
+void DescriptorWrites::bind(const vk::raii::CommandBuffer& cmd, const Pipeline& pipeline, DescriptorArena& arena) {
+  if (pipeline.bindings.empty()) return;
+  bindSet(cmd, pipeline, allocate(pipeline, arena));
+}
+
+void bindSet(const vk::raii::CommandBuffer& cmd, const Pipeline& pipeline, vk::DescriptorSet set) {
   cmd.bindDescriptorSets(pipeline.bindPoint, *pipeline.layout, 0, set, nullptr);
 }
 

@@ -15,6 +15,7 @@ class DescriptorArena {
  public:
   explicit DescriptorArena(const Context& ctx, uint32_t maxSets = 256);
   vk::DescriptorSet allocate(vk::DescriptorSetLayout layout);
+  const vk::raii::Device& device() const { return ctx_.device(); }
   // Only once every command buffer using the sets has completed.
   void reset();
 
@@ -33,6 +34,9 @@ class DescriptorWrites {
   DescriptorWrites& storageImage(uint32_t binding, const Image& image);
   DescriptorWrites& sampledImage(uint32_t binding, const Image& image, vk::Sampler sampler);
 
+  // Checks the writes against the pipeline, then allocates and writes a set.
+  vk::DescriptorSet allocate(const Pipeline& pipeline, DescriptorArena& arena);
+  // allocate() and bindSet() in one.
   void bind(const vk::raii::CommandBuffer& cmd, const Pipeline& pipeline, DescriptorArena& arena);
 
  private:
@@ -41,5 +45,9 @@ class DescriptorWrites {
   std::deque<vk::DescriptorImageInfo> images_;
   std::vector<vk::WriteDescriptorSet> writes_;
 };
+
+// Binds a set made by DescriptorWrites::allocate (sets kept for reuse, like
+// the two directions of a ping-pong).
+void bindSet(const vk::raii::CommandBuffer& cmd, const Pipeline& pipeline, vk::DescriptorSet set);
 
 }  // namespace tp::gpu

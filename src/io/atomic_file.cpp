@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -20,6 +22,12 @@ void checkWritable(const std::string& path) {
   if (access(dir.c_str(), W_OK | X_OK) != 0) {
     throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
   }
+}
+
+void requireExtension(const std::string& path, const std::string& extension) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != extension) throw std::runtime_error("output " + path + " must end in " + extension);
 }
 
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {

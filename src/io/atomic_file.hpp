@@ -30,4 +30,7 @@ class AtomicFile {
 // Throws when a file could not be created at `path` (checked before long work starts).
 void checkWritable(const std::string& path);
 
+// Throws unless `path` ends in `extension` (".exr", ".png"), case-insensitive.
+void requireExtension(const std::string& path, const std::string& extension);
+
 }  // namespace tp::io

@@ -3,7 +3,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -38,12 +37,6 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
 }
 
 }  // namespace
-
-void requireExtension(const std::string& path, const std::string& extension) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != extension) throw std::runtime_error("output " + path + " must end in " + extension);
-}
 
 void writeExr(const std::string& path, const FloatImage& image, PixelType type, const ExrAttributes& attributes) {
   requireExtension(path, ".exr");

@@ -34,7 +34,4 @@ FloatImage readImage(const std::string& path);
 // Writes an 8-bit RGBA PNG (already sRGB encoded), through a temporary file.
 void writePng(const std::string& path, uint32_t width, uint32_t height, const std::vector<std::uint8_t>& rgba);
 
-// Throws unless `path` ends in `extension` (".exr", ".png"), case-insensitive.
-void requireExtension(const std::string& path, const std::string& extension);
-
 }  // namespace tp::io

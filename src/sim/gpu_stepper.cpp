@@ -41,7 +41,7 @@ uint32_t groupsPerSide(uint32_t n) { return (n + kGroup - 1) / kGroup; }
 
 GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
                        StepKernel kernel, uint32_t halo)
-    : ctx_(ctx), params_(params), kernel_(kernel), halo_(halo) {
+    : ctx_(ctx), params_(params), kernel_(kernel), halo_(halo), descriptors_(ctx, 16) {
   params_.n = initial.n;
   validate(params_);
   if (halo < 1 || halo > kMaxHalo) {
@@ -64,6 +64,15 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   // The second buffer's x and z never change; give it the same contents so
   // that it is never read uninitialised, whichever kernel runs.
   gpu::uploadToBuffer(ctx, buffers_[1], cells.data(), cells.size() * sizeof(cells[0]));
+  const gpu::Pipeline& step = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
+  for (int k = 0; k < 2; ++k) {
+    stepSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]).allocate(
+        step, descriptors_);
+    dropSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).allocate(dropPipeline_, descriptors_);
+    sphereSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).allocate(spherePipeline_, descriptors_);
+    statsSets_[k] =
+        gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, partials_).allocate(statsPipeline_, descriptors_);
+  }
 }
 
 void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
@@ -82,8 +91,7 @@ uint64_t GpuStepper::dispatchesFor(uint64_t steps) const {
   return kernel_ == StepKernel::Tiled ? (steps + halo_ - 1) / halo_ : steps;
 }
 
-void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, uint64_t steps,
-                             double dt) {
+void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt) {
   checkStable(params_, dt);
   const uint32_t n = params_.n;
   const uint32_t inner = kTile - 2 * halo_;
@@ -92,8 +100,7 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, gpu::Descriptor
     const gpu::Pipeline& pipeline = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
     beforeCompute(cmd);
     gpu::bindPipeline(cmd, pipeline, stepParams(params_, dt, k));
-    gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).storageBuffer(1, buffers_[1 - current_]).bind(
-        cmd, pipeline, arena);
+    gpu::bindSet(cmd, pipeline, stepSets_[current_]);
     if (kernel_ == StepKernel::Tiled) {
       const uint32_t groups = (n + inner - 1) / inner;
       cmd.dispatch(groups, groups, 1);
@@ -105,28 +112,27 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, gpu::Descriptor
   }
 }
 
-void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec2 center,
-                            float radius, float amplitude) {
+void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude) {
   if (!(radius > 0.0f) || !std::isfinite(amplitude)) throw std::runtime_error("a drop needs a positive radius and a finite amplitude");
   beforeCompute(cmd);
   shader::WaterDropParams p{.n = params_.n, .h = float(params_.h()), .radius = radius, .amplitude = amplitude,
                             .center = center, .pad = {}};
   gpu::bindPipeline(cmd, dropPipeline_, p);
-  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).bind(cmd, dropPipeline_, arena);
+  gpu::bindSet(cmd, dropPipeline_, dropSets_[current_]);
   gpu::dispatchCovering(cmd, dropPipeline_, params_.n, params_.n);
 }
 
-void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec3 from,
-                                  glm::vec3 to, float radius, float restLevel) {
+void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius,
+                                  float restLevel) {
   beforeCompute(cmd);
   shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius), .newCenter = glm::vec4(to, restLevel),
                               .n = params_.n, .h = float(params_.h()), .pad = {}};
   gpu::bindPipeline(cmd, spherePipeline_, p);
-  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).bind(cmd, spherePipeline_, arena);
+  gpu::bindSet(cmd, spherePipeline_, sphereSets_[current_]);
   gpu::dispatchCovering(cmd, spherePipeline_, params_.n, params_.n);
 }
 
-void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, double dt) {
+void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, double dt) {
   beforeCompute(cmd);
   shader::WaterStatsParams p{.n = params_.n,
                              .boundary = params_.boundary == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
@@ -136,7 +142,7 @@ void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, gpu::Descriptor
                              .pad0 = 0.0f,
                              .pad1 = {}};
   gpu::bindPipeline(cmd, statsPipeline_, p);
-  gpu::DescriptorWrites().storageBuffer(0, buffers_[current_]).storageBuffer(1, partials_).bind(cmd, statsPipeline_, arena);
+  gpu::bindSet(cmd, statsPipeline_, statsSets_[current_]);
   gpu::dispatchCovering(cmd, statsPipeline_, params_.n, params_.n);
   auto toHost = gpu::bufferBarrier(partials_.handle(), gpu::access::computeWrite, gpu::access::hostRead);
   gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
@@ -159,10 +165,8 @@ WaterStats GpuStepper::readStats() const {
   return s;
 }
 
-void GpuStepper::submit(const std::function<void(const vk::raii::CommandBuffer&, gpu::DescriptorArena&)>& record,
-                        const char* what) {
-  gpu::DescriptorArena arena(ctx_, 4096);
-  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { record(cmd, arena); }, what);
+void GpuStepper::submit(const std::function<void(const vk::raii::CommandBuffer&)>& record, const char* what) {
+  gpu::submitAndWait(ctx_, record, what);
 }
 
 void GpuStepper::step(uint64_t steps, double dt) {
@@ -172,27 +176,22 @@ void GpuStepper::step(uint64_t steps, double dt) {
   const uint64_t stepsPerSubmit = kernel_ == StepKernel::Tiled ? kDispatchesPerSubmit * halo_ : kDispatchesPerSubmit;
   for (uint64_t done = 0; done < steps;) {
     const uint64_t k = std::min(stepsPerSubmit, steps - done);
-    submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) { recordSteps(cmd, arena, k, dt); },
-           "water simulation");
+    submit([&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");
     done += k;
   }
 }
 
 void GpuStepper::drop(glm::vec2 center, float radius, float amplitude) {
-  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) {
-    recordDrop(cmd, arena, center, radius, amplitude);
-  }, "water drop");
+  submit([&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
 }
 
 void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel) {
-  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) {
-    recordSphereMove(cmd, arena, from, to, radius, restLevel);
-  }, "sphere displacement");
+  submit([&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
+         "sphere displacement");
 }
 
 WaterStats GpuStepper::stats(double dt) {
-  submit([&](const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena) { recordStats(cmd, arena, dt); },
-         "water statistics");
+  submit([&](const vk::raii::CommandBuffer& cmd) { recordStats(cmd, dt); }, "water statistics");
   return readStats();
 }
 

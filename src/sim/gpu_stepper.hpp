@@ -28,14 +28,13 @@ class GpuStepper {
   GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
              StepKernel kernel = StepKernel::Tiled, uint32_t halo = 4);
 
-  void recordSteps(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, uint64_t steps, double dt);
-  void recordDrop(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec2 center, float radius,
-                  float amplitude);
+  void recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt);
+  void recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude);
   // Moves a sphere of `radius` from `from` to `to`, displacing water below `restLevel`.
-  void recordSphereMove(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, glm::vec3 from, glm::vec3 to,
-                        float radius, float restLevel);
+  void recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius,
+                        float restLevel);
   // Computes the per-workgroup statistics; readStats() after the submission finished.
-  void recordStats(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, double dt);
+  void recordStats(const vk::raii::CommandBuffer& cmd, double dt);
   WaterStats readStats() const;
 
   void step(uint64_t steps, double dt);
@@ -52,8 +51,7 @@ class GpuStepper {
 
  private:
   void beforeCompute(const vk::raii::CommandBuffer& cmd);
-  void submit(const std::function<void(const vk::raii::CommandBuffer&, gpu::DescriptorArena&)>& record,
-              const char* what);
+  void submit(const std::function<void(const vk::raii::CommandBuffer&)>& record, const char* what);
 
   const gpu::Context& ctx_;
   WaterParams params_;
@@ -62,6 +60,11 @@ class GpuStepper {
   gpu::Pipeline stepOne_, stepTiled_, dropPipeline_, spherePipeline_, statsPipeline_;
   gpu::Buffer buffers_[2];
   gpu::Buffer partials_;
+  // Descriptor sets made once: stepSets_[k] reads buffers_[k] and writes the
+  // other (for the kernel in use), inPlaceSets_[k] for the drop and sphere
+  // passes on buffers_[k], statsSets_[k] for the statistics of buffers_[k].
+  gpu::DescriptorArena descriptors_;
+  vk::DescriptorSet stepSets_[2], dropSets_[2], sphereSets_[2], statsSets_[2];
   uint32_t current_ = 0;
   bool pendingWrite_ = false;  // a compute write that later compute work must wait for
   double statsH_ = 0.0;

@@ -1,0 +1,25 @@
+#include "app/bench_command.hpp"
+
+namespace tp::app {
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time against error, as a table, CSV and a plot");
+  bench->require_subcommand(1);
+  CLI::App* sim = bench->add_subcommand(
+      "sim", "Water stepper: GPU (one step per dispatch, tiled) against an OpenMP C++ loop, cells/s and error");
+  sim->add_option("--sizes", o.sim.sizes, "Grid sides to measure")->delimiter(',')->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  sim->add_option("--csv", o.sim.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  sim->add_option("--plot", o.sim.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")->capture_default_str()
+      ->check(CLI::Range(0.01, 60.0));
+  sim->add_option("--device", o.sim.device, "Use the Vulkan device whose name contains NAME")->type_name("NAME");
+  return bench;
+}
+
+int runBench(CLI::App* bench, const BenchOptions& o) {
+  if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
+  return 2;
+}
+
+}  // namespace tp::app

@@ -1,0 +1,27 @@
+#include "app/plot.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "io/atomic_file.hpp"
+
+namespace tp::app {
+
+void plotCsv(const std::string& script, const std::string& csv, const std::string& png) {
+  const std::string path = std::string(TIDEPOOL_TOOLS_DIR) + "/" + script;
+  if (!std::filesystem::exists(path)) {
+    std::fprintf(stderr, "warning: no plot: %s not found\n", path.c_str());
+    return;
+  }
+  io::AtomicFile file(png);
+  const std::string command = "python3 '" + path + "' '" + csv + "' '" + file.tempPath() + "'";
+  if (std::system(command.c_str()) != 0 || !std::filesystem::exists(file.tempPath())) {
+    std::fprintf(stderr, "warning: no plot: %s failed (is python3-matplotlib installed?)\n", script.c_str());
+    return;
+  }
+  file.commit();
+  std::printf("wrote %s\n", png.c_str());
+}
+
+}  // namespace tp::app
