@@ -12,28 +12,6 @@
 #include "scene/scene.hpp"
 
 namespace tp::test {
-namespace {
-
-void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
-// Runs a command that must fail cleanly, and returns its one line of stderr.
-std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
-                               const std::vector<std::string>& filesBefore) {
-  ProcessResult r = runTidepool(args, dir);
-  EXPECT_NE(r.exitCode, 0) << args;
-  EXPECT_LT(r.exitCode, 128) << "crashed: " << args;
-  EXPECT_EQ(lineCount(r.err), 1) << args << "\nstderr:\n" << r.err;
-  EXPECT_EQ(r.err.rfind("tidepool: error: ", 0), 0u) << r.err;
-  auto after = dir.entries();
-  std::sort(after.begin(), after.end());
-  auto before = filesBefore;
-  std::sort(before.begin(), before.end());
-  EXPECT_EQ(after, before) << "files left behind by: " << args;
-  return r.err;
-}
-
-}  // namespace
-
 TEST(Cli, RenderWritesExrPngAndProfile) {
   ScratchDir dir;
   const std::string exr = dir.file("frame.exr"), png = dir.file("frame.png");

@@ -3,6 +3,7 @@
 // standard output and standard error, in a scratch directory per test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -68,5 +69,25 @@ inline int lineCount(const std::string& text) {
   if (!text.empty() && text.back() != '\n') ++n;
   return n;
 }
+
+// Runs a command that must fail cleanly (one line on stderr starting
+// "tidepool: error: ", an exit code that is neither 0 nor a crash, and the
+// scratch directory left as it was) and returns that line.
+inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
+                                      const std::vector<std::string>& filesBefore) {
+  ProcessResult r = runTidepool(args, dir);
+  EXPECT_NE(r.exitCode, 0) << args;
+  EXPECT_LT(r.exitCode, 128) << "crashed: " << args;
+  EXPECT_EQ(lineCount(r.err), 1) << args << "\nstderr:\n" << r.err;
+  EXPECT_EQ(r.err.rfind("tidepool: error: ", 0), 0u) << r.err;
+  auto after = dir.entries();
+  std::sort(after.begin(), after.end());
+  auto before = filesBefore;
+  std::sort(before.begin(), before.end());
+  EXPECT_EQ(after, before) << "files left behind by: " << args;
+  return r.err;
+}
+
+inline void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 }  // namespace tp::test

@@ -133,7 +133,7 @@ int runBenchSim(const BenchSimOptions& o) {
       b->UseManualTime()->MinTime(o.minTime)->Unit(benchmark::kMillisecond);
     }
   }
-  std::fprintf(stderr, "bench sim: %zu cases on %s, about %.0f s each\n", o.sizes.size() * methods.size(),
+  std::fprintf(stderr, "bench sim: %zu cases on %s, at least %.2g s each\n", o.sizes.size() * methods.size(),
                ctx.deviceName().c_str(), o.minTime);
   QuietReporter quiet;
   benchmark::RunSpecifiedBenchmarks(&quiet);

@@ -5,6 +5,7 @@
 
 #include "app/bench_command.hpp"
 #include "app/render_command.hpp"
+#include "app/sim_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
@@ -12,6 +13,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   tp::app::RenderOptions renderOptions;
   CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
+  tp::app::SimOptions simOptions;
+  CLI::App* sim = tp::app::addSimCommand(app, simOptions);
   tp::app::BenchOptions benchOptions;
   CLI::App* bench = tp::app::addBenchCommand(app, benchOptions);
   try {
@@ -31,6 +34,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (render->parsed()) return tp::app::runRender(renderOptions);
+    if (sim->parsed()) return tp::app::runSim(*sim, simOptions);
     if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tidepool: error: %s\n", e.what());

@@ -15,7 +15,10 @@ void plotCsv(const std::string& script, const std::string& csv, const std::strin
     return;
   }
   io::AtomicFile file(png);
-  const std::string command = "python3 '" + path + "' '" + csv + "' '" + file.tempPath() + "'";
+  // Debian's python3-matplotlib belongs to /usr/bin/python3, which another
+  // python3 earlier on PATH (pyenv, a venv) may hide.
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string command = python + " '" + path + "' '" + csv + "' '" + file.tempPath() + "'";
   if (std::system(command.c_str()) != 0 || !std::filesystem::exists(file.tempPath())) {
     std::fprintf(stderr, "warning: no plot: %s failed (is python3-matplotlib installed?)\n", script.c_str());
     return;

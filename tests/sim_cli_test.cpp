@@ -1,0 +1,118 @@
+// `tidepool sim` as a user runs it: the state it writes, resuming from it, and
+// how it refuses bad input.
+#include <gtest/gtest.h>
+
+#include "io/image_io.hpp"
+#include "process.hpp"
+#include "sim/water_state.hpp"
+
+namespace tp::test {
+
+TEST(SimCli, WritesTheStateAsAnExrOfUAndV) {
+  ScratchDir dir;
+  const std::string out = dir.file("state.exr");
+  ProcessResult r = runTidepool("sim --validate --grid 48 --steps 20 --init mode:2,1,0.1 --out " + out, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
+  const io::FloatImage image = io::readImage(out);
+  EXPECT_EQ(image.width, 48u);
+  EXPECT_EQ(image.height, 48u);
+  EXPECT_EQ(image.channels, (std::vector<std::string>{"u", "v"}));
+  const sim::WaterState s = sim::readStateExr(out);
+  float maxU = 0.0f;
+  for (float u : s.u) maxU = std::max(maxU, std::abs(u));
+  EXPECT_GT(maxU, 0.01f);
+  EXPECT_LT(maxU, 0.1001f);
+}
+
+// 30 steps, then 20 more from the written state, equal 50 steps in one run, to the bit.
+TEST(SimCli, ResumesExactlyWhereAnotherRunStopped) {
+  ScratchDir dir;
+  const std::string common = "sim --validate --grid 40 --dt 0.02 --damping 0.3 --boundary wrap ";
+  ASSERT_EQ(runTidepool(common + "--steps 30 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("a.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool(common + "--steps 20 --init " + dir.file("a.exr") + " --out " + dir.file("b.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool(common + "--steps 50 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("c.exr"), dir).exitCode, 0);
+  const auto b = sim::readStateExr(dir.file("b.exr")), c = sim::readStateExr(dir.file("c.exr"));
+  EXPECT_EQ(b.u, c.u);
+  EXPECT_EQ(b.v, c.v);
+}
+
+TEST(SimCli, BadParametersFailCleanly) {
+  ScratchDir dir;
+  const std::string out = " --out " + dir.file("x.exr");
+  std::vector<std::string> none;
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --dt 0.1" + out, dir, none).find("exceeds the 2D stability bound"),
+            std::string::npos);
+  expectCleanFailure("sim --grid 0" + out, dir, none);
+  expectCleanFailure("sim --grid -5" + out, dir, none);
+  EXPECT_NE(expectCleanFailure("sim --grid 4096" + out, dir, none).find("storage buffer limit"), std::string::npos);
+  expectCleanFailure("sim --grid 64", dir, none);  // no --out
+  expectCleanFailure("sim --grid 64 --boundary mirror" + out, dir, none);
+  expectCleanFailure("sim --grid 64 --scheme rk4" + out, dir, none);
+  expectCleanFailure("sim --grid 64 --dt 0.01 --frame-time 0.02" + out, dir, none);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --wave-speed nan" + out, dir, none).find("wave speed"), std::string::npos);
+  expectCleanFailure("sim --grid 64 --extent -1" + out, dir, none);
+  expectCleanFailure("sim --grid 64 --damping inf" + out, dir, none);
+  expectCleanFailure("sim --grid 64 --frame-time 0" + out, dir, none);
+  expectCleanFailure("sim --grid 64 --out " + dir.file("x.png"), dir, none);
+  expectCleanFailure("sim --grid 64 --out /nonexistent-dir/x.exr", dir, none);
+}
+
+TEST(SimCli, BadInitialStatesFailCleanly) {
+  ScratchDir dir;
+  const std::string out = " --out " + dir.file("x.exr");
+  // An RGBA render (no u, v channels), a u/v state of another size, a truncated EXR, text named .exr.
+  ASSERT_EQ(runTidepool("render --width 16 --height 16 --out " + dir.file("rgba.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool("sim --grid 32 --steps 1 --out " + dir.file("small.exr"), dir).exitCode, 0);
+  {
+    std::ifstream in(dir.file("small.exr"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    std::ofstream(dir.file("truncated.exr"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  }
+  writeText(dir.file("text.exr"), "not an image\n");
+  const std::vector<std::string> files{"rgba.exr", "small.exr", "truncated.exr", "text.exr"};
+  EXPECT_NE(expectCleanFailure("sim --init " + dir.file("missing.exr") + out, dir, files).find("missing.exr"),
+            std::string::npos);
+  EXPECT_NE(expectCleanFailure("sim --init " + dir.file("rgba.exr") + out, dir, files).find("channels u and v"),
+            std::string::npos);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --init " + dir.file("small.exr") + out, dir, files).find("32x32"),
+            std::string::npos);
+  expectCleanFailure("sim --init " + dir.file("truncated.exr") + out, dir, files);
+  expectCleanFailure("sim --init " + dir.file("text.exr") + out, dir, files);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2" + out, dir, files).find("expected 4"), std::string::npos);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2,x,4" + out, dir, files).find("'x'"), std::string::npos);
+  expectCleanFailure("sim --grid 64 --init drop:1,1,0,0.1" + out, dir, files);
+  expectCleanFailure("sim --grid 64 --init mode:1.5,1,0.1" + out, dir, files);
+}
+
+// The unstable scheme blows up; the run stops with an error and writes nothing.
+TEST(SimCli, BlowUpStopsWithAnErrorAndNoFile) {
+  ScratchDir dir;
+  EXPECT_NE(expectCleanFailure("sim --grid 32 --scheme explicit --steps 3000 --health-every 100 --out " + dir.file("x.exr"),
+                               dir, {})
+                .find("blew up"),
+            std::string::npos);
+}
+
+}  // namespace tp::test
+
+namespace tp::test {
+
+// The benchmark runs end to end and writes its CSV (its figures are not
+// asserted: speed is a benchmark's business, not a test's).
+TEST(BenchCli, SimBenchmarkWritesItsTable) {
+  ScratchDir dir;
+  const std::string csv = dir.file("bench.csv");
+  ProcessResult r = runTidepool("bench sim --sizes 16,32 --min-time 0.01 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("grid,method,", 0), 0u) << line;
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 2 * 5);
+  EXPECT_NE(r.out.find("cpu openmp"), std::string::npos);
+}
+
+}  // namespace tp::test
