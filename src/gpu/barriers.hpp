@@ -71,7 +71,6 @@ inline constexpr Access computeRead{S::eComputeShader, A::eShaderStorageRead};
 inline constexpr Access transferWrite{S::eCopy, A::eTransferWrite};
 inline constexpr Access transferRead{S::eCopy, A::eTransferRead};
 inline constexpr Access hostRead{S::eHost, A::eHostRead};
-inline constexpr Access hostWrite{S::eHost, A::eHostWrite};
 inline constexpr Access anyAccess{S::eAllCommands, A::eMemoryRead | A::eMemoryWrite};
 }  // namespace access
 

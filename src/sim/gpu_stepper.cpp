@@ -87,10 +87,6 @@ void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
   pendingWrite_ = true;
 }
 
-uint64_t GpuStepper::dispatchesFor(uint64_t steps) const {
-  return kernel_ == StepKernel::Tiled ? (steps + halo_ - 1) / halo_ : steps;
-}
-
 void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt) {
   checkStable(params_, dt);
   const uint32_t n = params_.n;
@@ -146,7 +142,6 @@ void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, double dt) {
   gpu::dispatchCovering(cmd, statsPipeline_, params_.n, params_.n);
   auto toHost = gpu::bufferBarrier(partials_.handle(), gpu::access::computeWrite, gpu::access::hostRead);
   gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
-  statsH_ = params_.h();
 }
 
 WaterStats GpuStepper::readStats() const {
@@ -154,7 +149,7 @@ WaterStats GpuStepper::readStats() const {
   std::vector<shader::WaterStatsPartial> partials(groups);
   std::memcpy(partials.data(), partials_.mapped, groups * sizeof(shader::WaterStatsPartial));
   WaterStats s;
-  const double area = statsH_ * statsH_;
+  const double area = params_.h() * params_.h();
   for (const auto& p : partials) {
     s.maxAbsU = std::max(s.maxAbsU, double(p.maxAbsU));
     s.maxAbsV = std::max(s.maxAbsV, double(p.maxAbsV));

@@ -47,7 +47,6 @@ class GpuStepper {
   const WaterParams& params() const { return params_; }
   StepKernel kernel() const { return kernel_; }
   uint32_t halo() const { return halo_; }
-  uint64_t dispatchesFor(uint64_t steps) const;
 
  private:
   void beforeCompute(const vk::raii::CommandBuffer& cmd);
@@ -67,7 +66,6 @@ class GpuStepper {
   vk::DescriptorSet stepSets_[2], dropSets_[2], sphereSets_[2], statsSets_[2];
   uint32_t current_ = 0;
   bool pendingWrite_ = false;  // a compute write that later compute work must wait for
-  double statsH_ = 0.0;
 };
 
 }  // namespace tp::sim
