@@ -22,6 +22,7 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 // pi * c on an up-facing surface, exactly.
 scene::Scene uniformSkyScene() {
   scene::Scene s = scene::defaultScene();
+  s.water.enabled = false;
   s.sky.zenith = s.sky.horizon = glm::vec3(0.4f, 0.5f, 0.7f);
   s.sky.glow = glm::vec3(0.0f);
   return s;
@@ -81,7 +82,9 @@ TEST_F(RenderTest, GroundIsLambertianUnderSunAndUniformSky) {
 }
 
 TEST_F(RenderTest, SkyPixelsShowTheSkyAlongTheirViewRay) {
-  const scene::Scene s = scene::defaultScene();
+  scene::Scene s = scene::defaultScene();
+  s.camera.position = {0.0f, 2.0f, 8.0f};  // a view with much sky
+  s.camera.target = {0.0f, 0.5f, 0.0f};
   render::Renderer renderer(ctx(), s, kWidth, kHeight);
   auto frame = renderer.render({.hdr = true});
   const auto u = render::frameUniforms(s, kWidth, kHeight);
@@ -112,16 +115,24 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return n;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "readback hdr"}));
+  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "simulate", "water", "readback hdr"}));
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both),
-            (std::vector<std::string>{"sky", "background", "ground", "tonemap", "readback hdr", "readback ldr"}));
+  EXPECT_EQ(names(both), (std::vector<std::string>{"sky", "background", "ground", "simulate", "water", "tonemap",
+                                                   "readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
-  EXPECT_EQ(names(ldrOnly), (std::vector<std::string>{"sky", "background", "ground", "tonemap", "readback ldr"}));
+  EXPECT_EQ(names(ldrOnly),
+            (std::vector<std::string>{"sky", "background", "ground", "simulate", "water", "tonemap", "readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
   for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
+
+  // A scene without water pays for none: no simulation, no water pass.
+  scene::Scene dry = scene::defaultScene();
+  dry.water.enabled = false;
+  render::Renderer dryRenderer(ctx(), dry, 64, 48);
+  EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
+            (std::vector<std::string>{"sky", "background", "ground", "readback hdr"}));
 }
 
 TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
@@ -140,6 +151,110 @@ TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
     }
     ASSERT_EQ(f.srgb[i + 3], 255);
   }
+}
+
+}  // namespace tp::test
+
+namespace tp::test {
+namespace {
+
+glm::vec3 refractGlsl(glm::vec3 i, glm::vec3 n, float eta) {
+  const float k = 1.0f - eta * eta * (1.0f - glm::dot(n, i) * glm::dot(n, i));
+  if (k < 0.0f) return glm::vec3(0.0f);
+  return eta * i - (eta * glm::dot(n, i) + std::sqrt(k)) * n;
+}
+
+// Flat water (no drops) seen straight down from above.
+scene::Scene flatWaterFromAbove() {
+  scene::Scene s = scene::defaultScene();
+  s.camera.position = {0.3f, 3.0f, 0.2f};
+  s.camera.target = {0.3f, 0.0f, 0.2f};
+  s.camera.up = {0.0f, 0.0f, -1.0f};
+  s.camera.fovYDegrees = 60.0f;
+  s.water.drops.clear();
+  s.ground.checkerSize = 0.25f;
+  return s;
+}
+
+}  // namespace
+
+using WaterRenderTest = GpuTest;
+
+// Through flat water seen from above, each pixel shows the floor where Snell's
+// law puts it: the CPU traces the pixel's ray (reflection of the sky, Schlick's
+// Fresnel, refraction to the floor, absorption along the path) and the frame
+// must agree. Pixels where the straight, unrefracted ray would land on the
+// other checker colour prove that the refraction is what is checked.
+TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
+  const scene::Scene s = flatWaterFromAbove();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  const auto frame = renderer.render({.frame = 0, .hdr = true});
+  const auto u = render::frameUniforms(s, kWidth, kHeight);
+  const auto sky = render::skyParams(s.sky);
+  const float ior = s.water.ior;
+  const float f0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
+  const glm::vec3 irradiance = glm::vec3(u.sunIrradiance) * std::max(u.sunDirection.y, 0.0f) + glm::vec3(u.skyIrradiance);
+  const float half = 0.5f * s.water.extent;
+  auto parityAt = [&](glm::vec2 xz, bool& nearEdge) {
+    const glm::vec2 q = xz / s.ground.checkerSize;
+    const glm::vec2 f = q - glm::floor(q);
+    nearEdge = f.x < 0.15f || f.x > 0.85f || f.y < 0.15f || f.y > 0.85f;
+    return (int(std::floor(q.x)) + int(std::floor(q.y))) % 2 == 0;
+  };
+  int checked = 0, refractionDecides = 0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      const glm::vec3 d = pixelRay(u, x, y);
+      const float t = (s.water.level - u.cameraPosition.y) / d.y;
+      const glm::vec3 p = glm::vec3(u.cameraPosition) + t * d;
+      if (std::abs(p.x) > half - 0.05f || std::abs(p.z) > half - 0.05f) continue;  // on the water, off its rim
+      const glm::vec3 n(0.0f, 1.0f, 0.0f);
+      const glm::vec3 refracted = refractGlsl(d, n, 1.0f / ior);
+      const float s2 = (s.ground.height - p.y) / refracted.y;
+      const glm::vec3 hit = p + s2 * refracted;
+      bool nearEdge = false, straightNearEdge = false;
+      const bool even = parityAt({hit.x, hit.z}, nearEdge);
+      const glm::vec3 straight = p + ((s.ground.height - p.y) / d.y) * d;
+      const bool straightEven = parityAt({straight.x, straight.z}, straightNearEdge);
+      if (nearEdge) continue;
+      const glm::vec3 albedo = even ? s.ground.albedoA : s.ground.albedoB;
+      const glm::vec3 transmitted = albedo / glm::pi<float>() * irradiance * glm::exp(-s.water.absorption * s2);
+      const float cosIn = std::clamp(-glm::dot(d, n), 0.0f, 1.0f);
+      const float fresnel = f0 + (1.0f - f0) * std::pow(1.0f - cosIn, 5.0f);
+      const glm::vec3 reflected = shader::skyRadiance(sky, glm::reflect(d, n), 1.0f);
+      const glm::vec3 expected = glm::mix(transmitted, reflected, fresnel);
+      const glm::vec3 got = pixel(frame, x, y);
+      for (int c = 0; c < 3; ++c) {
+        // The reflected sky comes from a half-float texture: 2e-3 of it, plus float shading.
+        ASSERT_NEAR(got[c], expected[c], 2e-3f * fresnel * reflected[c] + 1e-4f * expected[c] + 1e-6f)
+            << x << "," << y << " channel " << c;
+      }
+      ++checked;
+      if (!straightNearEdge && straightEven != even) ++refractionDecides;
+    }
+  }
+  EXPECT_GT(checked, 5000);
+  EXPECT_GT(refractionDecides, 500);
+}
+
+// Frame N is the water after N frames from the scene's start, whichever frames
+// the renderer drew before; water at rest and in motion differ.
+TEST_F(WaterRenderTest, FramesAreDeterministicAndTheWaterMoves) {
+  const scene::Scene s = scene::defaultScene();
+  render::Renderer a(ctx(), s, 96, 64), b(ctx(), s, 96, 64);
+  const auto a0 = a.render({.frame = 0});
+  const auto a12 = a.render({.frame = 12});
+  (void)b.render({.frame = 5});
+  const auto b12 = b.render({.frame = 12});
+  const auto b0 = b.render({.frame = 0});  // backwards: restarts the simulation
+  EXPECT_EQ(a12.rgba, b12.rgba);
+  EXPECT_EQ(a0.rgba, b0.rgba);
+  EXPECT_NE(a0.rgba, a12.rgba);
+
+  scene::Scene calm = s;
+  calm.water.drops.clear();
+  render::Renderer c(ctx(), calm, 96, 64);
+  EXPECT_EQ(c.render({.frame = 0}).rgba, c.render({.frame = 12}).rgba);  // nothing disturbs flat water
 }
 
 }  // namespace tp::test

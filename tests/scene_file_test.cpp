@@ -47,7 +47,7 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"camera": {"fov": 180}})").find("camera fov"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"fov": 1e999}})").find("shot.json: not valid JSON"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"near": 0}})").find("near"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"camera": {"target": [0, 2, 8]}})").find("target equals its position"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"position": [1, 2, 3], "target": [1, 2, 3]}})").find("target equals its position"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})").find("parallel"), std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"sun_radiance": [1, -1, 1]}})").find("sky.sun_radiance must not be negative"),
             std::string::npos);

@@ -29,6 +29,10 @@ UseInfo info(Use use) {
     case Use::DepthWrite:
       return {{S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite},
               L::eDepthAttachmentOptimal, false, true};
+    case Use::DepthReadWrite:
+      return {{S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite},
+              L::eDepthAttachmentOptimal, true, true};
+    case Use::VertexStorageRead: return {{S::eVertexShader, A::eShaderStorageRead}, L::eGeneral, true, false};
     case Use::TransferRead: return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
     case Use::TransferWrite: return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, false, true};
   }

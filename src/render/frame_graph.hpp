@@ -21,6 +21,8 @@ enum class Use {
   ColorWrite,        // color attachment, cleared or fully covered
   ColorReadWrite,    // color attachment, loaded and drawn over
   DepthWrite,        // depth attachment, cleared, tested and written
+  DepthReadWrite,    // depth attachment, loaded, tested and written
+  VertexStorageRead, // storage buffer read in the vertex stage
   TransferRead,      // source of a copy
   TransferWrite,     // destination of a copy
 };

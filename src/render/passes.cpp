@@ -2,6 +2,8 @@
 
 #include "gpu/descriptors.hpp"
 
+#include <functional>
+
 namespace tp::render {
 namespace {
 
@@ -82,6 +84,46 @@ void GroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Ima
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, pipeline, pc.descriptors);
                setViewport(cmd, color.extent);
                cmd.draw(6, 1, 0, 0);
+               cmd.endRendering();
+             });
+}
+
+WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx)
+    : pipeline(gpu::createGraphicsPipeline(ctx, {.vertexShader = "water_surface.vert",
+                                                 .fragmentShader = "water_surface.frag",
+                                                 .pushSize = sizeof(shader::WaterSurfaceParams),
+                                                 .colorFormats = {kHdrFormat},
+                                                 .depthFormat = kDepthFormat,
+                                                 .depthTest = true,
+                                                 .depthWrite = true})) {}
+
+void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+                               const gpu::Image& depth, std::vector<ResourceRef> stateRefs,
+                               std::function<const gpu::Buffer&()> state, ResourceRef skyRef, const gpu::Image& sky,
+                               vk::Sampler sampler, const gpu::Buffer& frameUniforms, const gpu::Buffer& indices,
+                               uint32_t indexCount, const shader::WaterSurfaceParams& params) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{
+      {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
+  for (ResourceRef r : stateRefs) uses.push_back({r, Use::VertexStorageRead});
+  graph.pass("water", std::move(uses),
+             [this, &color, &depth, state, &sky, sampler, &frameUniforms, &indices, indexCount, params](PassContext& pc) {
+               const auto& cmd = pc.cmd;
+               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                                    .layerCount = 1,
+                                                    .colorAttachmentCount = 1,
+                                                    .pColorAttachments = &colorTarget,
+                                                    .pDepthAttachment = &depthTarget});
+               gpu::bindPipeline(cmd, pipeline, params);
+               gpu::DescriptorWrites()
+                   .uniformBuffer(0, frameUniforms)
+                   .sampledImage(1, sky, sampler)
+                   .storageBuffer(2, state())
+                   .bind(cmd, pipeline, pc.descriptors);
+               setViewport(cmd, color.extent);
+               cmd.bindIndexBuffer(indices.handle(), 0, vk::IndexType::eUint32);
+               cmd.drawIndexed(indexCount, 1, 0, 0, 0);
                cmd.endRendering();
              });
 }

@@ -8,6 +8,7 @@
 #include "shared/ground.h"
 #include "shared/sky.h"
 #include "shared/tonemap.h"
+#include "shared/water_surface.h"
 
 namespace tp::render {
 
@@ -36,6 +37,18 @@ struct GroundPass {
   explicit GroundPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                const gpu::Image& depth, const gpu::Buffer& frameUniforms, const shader::GroundParams& params) const;
+  gpu::Pipeline pipeline;
+};
+
+// Graphics: the simulated water surface over the ground, reflecting the sky
+// and refracting the floor. It reads the state buffer in the vertex stage;
+// `state` names the buffer that holds the current state when it records.
+struct WaterSurfacePass {
+  explicit WaterSurfacePass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+               const gpu::Image& depth, std::vector<ResourceRef> stateRefs, std::function<const gpu::Buffer&()> state,
+               ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms,
+               const gpu::Buffer& indices, uint32_t indexCount, const shader::WaterSurfaceParams& params) const;
   gpu::Pipeline pipeline;
 };
 

@@ -1,12 +1,16 @@
 #include "render/renderer.hpp"
 
 #include <cstring>
+#include <optional>
 
 #include "gpu/submit.hpp"
 #include "gpu/timer.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
+#include "render/water_model.hpp"
+#include "gpu/transfer.hpp"
+#include "sim/gpu_stepper.hpp"
 
 namespace tp::render {
 
@@ -38,6 +42,18 @@ struct Renderer::Resources {
         ldrReadback(gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst,
                                       gpu::MemoryUse::Readback, "LDR readback")),
         descriptors(ctx) {
+    if (scene.water.enabled) {
+      water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water),
+                    sim::StepKernel::OnePerDispatch);
+      const auto gridIndices = waterGridIndices(scene.water.grid);
+      indexCount = uint32_t(gridIndices.size());
+      indices = gpu::createBuffer(ctx, gridIndices.size() * sizeof(uint32_t),
+                                  vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
+                                  gpu::MemoryUse::Device, "water grid indices");
+      gpu::uploadToBuffer(ctx, indices, gridIndices.data(), gridIndices.size() * sizeof(uint32_t));
+      waterStep = render::waterStep(scene.water);
+      substeps = render::waterSubsteps(scene.water);
+    }
     auto skyRef = graph.image("sky", sky);
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
@@ -52,6 +68,16 @@ struct Renderer::Resources {
     skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    if (water) {
+      std::vector<ResourceRef> stateRefs{graph.buffer("water state 0", water->buffer(0)),
+                                         graph.buffer("water state 1", water->buffer(1))};
+      graph.pass("simulate", {{stateRefs[0], Use::ComputeReadWrite}, {stateRefs[1], Use::ComputeReadWrite}},
+                 [this](PassContext& pc) { water->recordSteps(pc.cmd, pendingSteps, waterStep); });
+      waterPass.emplace(ctx);
+      waterPass->declare(graph, colorRef, color, depthRef, depth, stateRefs,
+                         [this]() -> const gpu::Buffer& { return water->current(); }, skyRef, sky, *sampler, uniforms,
+                         indices, indexCount, waterSurfaceParams(scene));
+    }
     tonemapPass.declare(graph, colorRef, color, ldrRef, ldr, scene.render.exposure);
     declareReadback(graph, "readback hdr", colorRef, color, colorReadbackRef, colorReadback);
     declareReadback(graph, "readback ldr", ldrRef, ldr, ldrReadbackRef, ldrReadback);
@@ -65,6 +91,16 @@ struct Renderer::Resources {
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
+  // The water, when the scene has it: the stepper, the grid's index buffer,
+  // and the steps the next frame takes to reach its frame number.
+  std::optional<sim::GpuStepper> water;
+  std::optional<WaterSurfacePass> waterPass;
+  gpu::Buffer indices;
+  uint32_t indexCount = 0;
+  double waterStep = 0.0;
+  uint32_t substeps = 1;
+  uint64_t stepsDone = 0;
+  uint64_t pendingSteps = 0;
   FrameGraph graph;
   ResourceRef colorRef, colorReadbackRef, ldrReadbackRef;
 };
@@ -84,6 +120,16 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   out.worldToCamera = uniforms.view;
   out.worldToNDC = uniforms.viewProjection;
 
+  if (res_->water) {
+    // Frame N shows the water after N frames of simulation from the scene's
+    // start, whatever was rendered before: going back restarts it.
+    const uint64_t target = uint64_t(request.frame) * res_->substeps;
+    if (target < res_->stepsDone) {
+      res_->water->reset(waterInitialState(scene_.water));
+      res_->stepsDone = 0;
+    }
+    res_->pendingSteps = target - res_->stepsDone;
+  }
   std::vector<ResourceRef> requested;
   if (request.hdr) requested.push_back(res_->colorReadbackRef);
   if (request.ldr) requested.push_back(res_->ldrReadbackRef);
@@ -97,6 +143,8 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     names = res_->graph.record(context, requested, &timer);
   }, "frame rendering");
   for (const auto& scope : timer.read()) out.passes.push_back({scope.name, scope.milliseconds});
+  res_->stepsDone += res_->pendingSteps;
+  res_->pendingSteps = 0;
 
   const size_t pixels = size_t(width_) * height_;
   if (request.hdr) {

@@ -4,8 +4,8 @@
 namespace tp::scene {
 
 struct Camera {
-  glm::vec3 position{0.0f, 2.0f, 8.0f};
-  glm::vec3 target{0.0f, 0.5f, 0.0f};
+  glm::vec3 position{3.2f, 2.4f, 4.6f};
+  glm::vec3 target{0.0f, 0.3f, 0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float fovYDegrees = 50.0f;
   float nearPlane = 0.05f;

@@ -52,6 +52,23 @@ void validateScene(const Scene& s) {
   requireNonNegative(s.ground.albedoA, "ground.albedo_a");
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
+  const Water& w = s.water;
+  requireRange(float(w.grid), 2.0f, 8192.0f, "water.grid");
+  requireRange(w.extent, 1e-3f, 1e4f, "water.extent");
+  requireRange(w.level, -1e4f, 1e4f, "water.level");
+  requireRange(w.waveSpeed, 1e-6f, 1e4f, "water.wave_speed");
+  requireRange(w.damping, 0.0f, 1e4f, "water.damping");
+  if (w.boundary != "clamp" && w.boundary != "wrap") throw std::runtime_error("water.boundary must be clamp or wrap");
+  requireRange(w.maxSlope, 0.0f, 1e4f, "water.max_slope");
+  requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
+  requireRange(w.ior, 1.0f, 3.0f, "water.ior");
+  requireNonNegative(w.absorption, "water.absorption");
+  for (const Drop& d : w.drops) {
+    requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
+    requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");
+    requireRange(d.radius, 1e-6f, 1e4f, "water.drops[].radius");
+    requireRange(d.amplitude, -1e4f, 1e4f, "water.drops[].amplitude");
+  }
 }
 
 }  // namespace tp::scene

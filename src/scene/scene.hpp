@@ -1,5 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
+#include <string>
+#include <vector>
 
 #include "scene/camera.hpp"
 
@@ -32,6 +34,31 @@ struct Ground {
   bool operator==(const Ground&) const = default;
 };
 
+struct Drop {
+  float x = 0.0f, z = 0.0f;  // world position of the centre
+  float radius = 0.3f;
+  float amplitude = 0.04f;
+  bool operator==(const Drop&) const = default;
+};
+
+// The simulated water: a square of `extent` metres centred on the origin, at
+// rest at height `level`, disturbed by drops at frame 0.
+struct Water {
+  bool enabled = true;
+  unsigned grid = 128;
+  float extent = 4.0f;
+  float level = 0.5f;
+  float waveSpeed = 0.6f;
+  float damping = 0.3f;           // 1/s
+  std::string boundary = "clamp";
+  float maxSlope = 0.0f;
+  float frameTime = 1.0f / 30.0f;  // seconds of simulation per rendered frame
+  float ior = 1.333f;
+  glm::vec3 absorption{0.45f, 0.09f, 0.06f};  // 1/m, red absorbed most
+  std::vector<Drop> drops{{-0.8f, -0.5f, 0.35f, 0.05f}, {0.9f, 0.6f, 0.25f, -0.04f}, {0.2f, 1.2f, 0.2f, 0.03f}};
+  bool operator==(const Water&) const = default;
+};
+
 struct Render {
   float exposure = 0.8f;
   bool operator==(const Render&) const = default;
@@ -41,6 +68,7 @@ struct Scene {
   Camera camera;
   Sky sky;
   Ground ground;
+  Water water;
   Render render;
   bool operator==(const Scene&) const = default;
 };

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace tp::scene {
 namespace {
@@ -43,6 +44,36 @@ class ObjectReader {
       for (int i = 0; i < 3; ++i) {
         if (!(*v)[i].is_number()) fail(name(key), "expected an array of 3 numbers");
         out[i] = (*v)[i].get<float>();
+      }
+    }
+  }
+
+  void flag(const char* key, bool& out) {
+    if (const json* v = take(key)) {
+      if (!v->is_boolean()) fail(name(key), "expected true or false, got " + std::string(v->type_name()));
+      out = v->get<bool>();
+    }
+  }
+
+  void text(const char* key, std::string& out) {
+    if (const json* v = take(key)) {
+      if (!v->is_string()) fail(name(key), "expected a string, got " + std::string(v->type_name()));
+      out = v->get<std::string>();
+    }
+  }
+
+  // An array of objects, each read into a T by readFields(reader, element).
+  template <typename T, typename F>
+  void objects(const char* key, std::vector<T>& out, F&& readFields) {
+    if (const json* v = take(key)) {
+      if (!v->is_array()) fail(name(key), "expected an array of objects");
+      out.clear();
+      for (size_t i = 0; i < v->size(); ++i) {
+        ObjectReader child((*v)[i], name(key) + "[" + std::to_string(i) + "]", origin_);
+        T element{};
+        readFields(child, element);
+        child.finish();
+        out.push_back(element);
       }
     }
   }
@@ -118,6 +149,25 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("checker_size", s.ground.checkerSize);
     r.vec3("albedo_a", s.ground.albedoA);
     r.vec3("albedo_b", s.ground.albedoB);
+  });
+  top.object("water", [&](ObjectReader& r) {
+    r.flag("enabled", s.water.enabled);
+    r.count("grid", s.water.grid);
+    r.number("extent", s.water.extent);
+    r.number("level", s.water.level);
+    r.number("wave_speed", s.water.waveSpeed);
+    r.number("damping", s.water.damping);
+    r.text("boundary", s.water.boundary);
+    r.number("max_slope", s.water.maxSlope);
+    r.number("frame_time", s.water.frameTime);
+    r.number("ior", s.water.ior);
+    r.vec3("absorption", s.water.absorption);
+    r.objects("drops", s.water.drops, [](ObjectReader& d, scene::Drop& drop) {
+      d.number("x", drop.x);
+      d.number("z", drop.z);
+      d.number("radius", drop.radius);
+      d.number("amplitude", drop.amplitude);
+    });
   });
   top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
   top.finish();

@@ -59,11 +59,7 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   buffers_[1] = stateBuffer(ctx, n, grid.c_str());
   partials_ = gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
                                 vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
-  auto cells = toCells(initial, params_.extent);
-  gpu::uploadToBuffer(ctx, buffers_[0], cells.data(), cells.size() * sizeof(cells[0]));
-  // The second buffer's x and z never change; give it the same contents so
-  // that it is never read uninitialised, whichever kernel runs.
-  gpu::uploadToBuffer(ctx, buffers_[1], cells.data(), cells.size() * sizeof(cells[0]));
+  reset(initial);
   const gpu::Pipeline& step = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
   for (int k = 0; k < 2; ++k) {
     stepSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]).allocate(
@@ -73,6 +69,16 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
     statsSets_[k] =
         gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, partials_).allocate(statsPipeline_, descriptors_);
   }
+}
+
+void GpuStepper::reset(const WaterState& state) {
+  if (state.n != params_.n) throw std::logic_error("GpuStepper::reset: another grid size");
+  auto cells = toCells(state, params_.extent);
+  gpu::uploadToBuffer(ctx_, buffers_[0], cells.data(), cells.size() * sizeof(cells[0]));
+  // The second buffer's x and z never change; give it the same contents so
+  // that it is never read uninitialised, whichever kernel runs.
+  gpu::uploadToBuffer(ctx_, buffers_[1], cells.data(), cells.size() * sizeof(cells[0]));
+  current_ = 0;
 }
 
 void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {

@@ -37,6 +37,8 @@ class GpuStepper {
   void recordStats(const vk::raii::CommandBuffer& cmd, double dt);
   WaterStats readStats() const;
 
+  // Starts again from `state` (same grid size), as if newly made.
+  void reset(const WaterState& state);
   void step(uint64_t steps, double dt);
   void drop(glm::vec2 center, float radius, float amplitude);
   void moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel);
@@ -44,6 +46,7 @@ class GpuStepper {
   WaterState download() const;
 
   const gpu::Buffer& current() const { return buffers_[current_]; }
+  const gpu::Buffer& buffer(int k) const { return buffers_[k]; }
   const WaterParams& params() const { return params_; }
   StepKernel kernel() const { return kernel_; }
   uint32_t halo() const { return halo_; }

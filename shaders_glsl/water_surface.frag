@@ -1,0 +1,40 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The water surface seen from above: the sky reflected (equirectangular
+// lookup of the reflected ray) and the floor refracted (Snell's law, the
+// refracted ray cast exactly against the ground plane), mixed by Schlick's
+// Fresnel, the refracted light attenuated along its path through the water.
+#include "lib/equirect.glsl"
+#include "lib/ground_shading.glsl"
+#include "shared/water_surface.h"
+
+layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in vec3 worldNormal;
+layout(location = 0) out vec4 color;
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform sampler2D skyTexture;
+layout(push_constant) uniform Push { WaterSurfaceParams surface; };
+
+vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
+
+void main() {
+  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
+  vec3 n = normalize(worldNormal);
+  const float ior = surface.absorption.w;
+  const float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
+  const float cosIn = clamp(-dot(view, n), 0.0, 1.0);
+  const float fresnel = f0 + (1.0 - f0) * pow(1.0 - cosIn, 5.0);
+  const vec3 reflected = sky(reflect(view, n));
+
+  vec3 transmitted = vec3(0.0);
+  const vec3 t = refract(view, n, 1.0 / ior);
+  const float floorY = surface.ground.plane.y;
+  if (dot(t, t) > 0.0 && t.y < 0.0 && worldPosition.y > floorY) {
+    const float s = (floorY - worldPosition.y) / t.y;
+    const vec3 hit = worldPosition + s * t;
+    transmitted = groundRadiance(surface.ground, frame, hit.xz, fwidth(hit.xz)) * exp(-surface.absorption.rgb * s);
+  }
+  // Total internal reflection cannot happen from above; a refracted ray that
+  // never reaches the floor sees nothing (black depths).
+  color = vec4(mix(transmitted, reflected, fresnel), 1.0);
+}

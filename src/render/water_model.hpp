@@ -1,0 +1,23 @@
+#pragma once
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "shared/water_surface.h"
+#include "sim/water_params.hpp"
+#include "sim/water_state.hpp"
+
+namespace tp::render {
+
+// From the scene's water to the simulation and the surface pass: the one place
+// where the square centred on the origin meets the grid's cell coordinates.
+sim::WaterParams waterParams(const scene::Water& water);
+// Seconds per simulation step: the frame time split into the fewest stable substeps.
+uint32_t waterSubsteps(const scene::Water& water);
+double waterStep(const scene::Water& water);
+// Flat water with the scene's drops, at rest (sim::startAtRest).
+sim::WaterState waterInitialState(const scene::Water& water);
+// Two triangles per grid quad, counter-clockwise seen from above.
+std::vector<uint32_t> waterGridIndices(uint32_t n);
+shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
+
+}  // namespace tp::render
