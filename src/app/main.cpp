@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "app/bench_command.hpp"
+#include "app/export_command.hpp"
 #include "app/render_command.hpp"
 #include "app/sim_command.hpp"
 
@@ -15,6 +16,8 @@ int main(int argc, char** argv) {
   CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
   tp::app::SimOptions simOptions;
   CLI::App* sim = tp::app::addSimCommand(app, simOptions);
+  tp::app::ExportOptions exportOptions;
+  CLI::App* exporter = tp::app::addExportCommand(app, exportOptions);
   tp::app::BenchOptions benchOptions;
   CLI::App* bench = tp::app::addBenchCommand(app, benchOptions);
   try {
@@ -35,6 +38,7 @@ int main(int argc, char** argv) {
   try {
     if (render->parsed()) return tp::app::runRender(renderOptions);
     if (sim->parsed()) return tp::app::runSim(*sim, simOptions);
+    if (exporter->parsed()) return tp::app::runExport(exportOptions);
     if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tidepool: error: %s\n", e.what());

@@ -49,4 +49,20 @@ shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene) {
   };
 }
 
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water) {
+  std::vector<scene::Mesh> meshes;
+  const scene::Ground& g = scene.ground;
+  const float e = g.halfExtent, y = g.height;
+  meshes.push_back({"ground", {{-e, y, -e}, {e, y, -e}, {e, y, e}, {-e, y, e}}, {0, 3, 1, 1, 3, 2}});
+  if (water) {
+    const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+    const auto cells = sim::toCells(*water, scene.water.extent);
+    scene::Mesh surface{"water", {}, waterGridIndices(water->n)};
+    surface.positions.reserve(cells.size());
+    for (const auto& c : cells) surface.positions.push_back({p.placement.x + c.x, p.placement.y + c.u, p.placement.z + c.z});
+    meshes.push_back(std::move(surface));
+  }
+  return meshes;
+}
+
 }  // namespace tp::render

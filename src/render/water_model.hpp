@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 
+#include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shared/water_surface.h"
 #include "sim/water_params.hpp"
@@ -19,5 +20,9 @@ sim::WaterState waterInitialState(const scene::Water& water);
 // Two triangles per grid quad, counter-clockwise seen from above.
 std::vector<uint32_t> waterGridIndices(uint32_t n);
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
+
+// The triangles a frame shows, in world space: the ground square and, when
+// the scene has water, its surface given the simulation state.
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water);
 
 }  // namespace tp::render

@@ -1,0 +1,50 @@
+#include "app/export_command.hpp"
+
+#include <cstdio>
+#include <optional>
+
+#include "app/gpu_session.hpp"
+#include "io/mesh_io.hpp"
+#include "render/water_model.hpp"
+#include "scene/scene_file.hpp"
+#include "sim/gpu_stepper.hpp"
+
+namespace tp::app {
+
+CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
+  CLI::App* cmd = app.add_subcommand("export", "Write the scene's triangles (water included) at a frame as OBJ or PLY");
+  cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see README); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
+  cmd->add_option("--out", o.out, "Output .obj or .ply")->type_name("PATH")->required();
+  cmd->add_flag("--validate", o.validate,
+                "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
+  cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
+      ->type_name("NAME");
+  return cmd;
+}
+
+int runExport(const ExportOptions& o) {
+  io::checkMeshOutput(o.out);
+  const scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  std::optional<sim::WaterState> water;
+  int exitCode = 0;
+  if (scene.water.enabled) {
+    // The same simulation the renderer runs for this frame.
+    GpuSession session(o.validate, o.device);
+    sim::GpuStepper stepper(session.context(), render::waterParams(scene.water), render::waterInitialState(scene.water),
+                            sim::StepKernel::OnePerDispatch);
+    stepper.step(uint64_t(o.frame) * render::waterSubsteps(scene.water), render::waterStep(scene.water));
+    water = stepper.download();
+    exitCode = session.finish();
+  }
+  const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr);
+  io::writeMeshes(o.out, meshes);
+  size_t triangles = 0;
+  for (const auto& m : meshes) triangles += m.indices.size() / 3;
+  std::printf("wrote %s (%zu meshes, %zu triangles, frame %u)\n", o.out.c_str(), meshes.size(), triangles, o.frame);
+  return exitCode;
+}
+
+}  // namespace tp::app

@@ -1,0 +1,19 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace tp::app {
+
+struct ExportOptions {
+  std::string scenePath;
+  uint32_t frame = 0;
+  std::string out;
+  bool validate = false;
+  std::string device;
+};
+
+// `tidepool export`: the scene's triangles (water included) at a frame, as OBJ or PLY.
+CLI::App* addExportCommand(CLI::App& app, ExportOptions& options);
+int runExport(const ExportOptions& options);
+
+}  // namespace tp::app

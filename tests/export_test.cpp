@@ -1,0 +1,101 @@
+// `tidepool export`: the scene's triangles as OBJ and PLY, the water at a
+// frame checked against the CPU reference.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "process.hpp"
+#include "render/water_model.hpp"
+#include "sim/reference_sim.hpp"
+
+namespace tp::test {
+namespace {
+
+struct ObjContents {
+  std::vector<glm::vec3> vertices;
+  size_t faces = 0;
+  std::vector<std::string> objects;
+};
+
+ObjContents readObj(const std::string& path) {
+  ObjContents c;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      glm::vec3 v;
+      s >> v.x >> v.y >> v.z;
+      c.vertices.push_back(v);
+    } else if (tag == "f") {
+      ++c.faces;
+    } else if (tag == "o") {
+      std::string name;
+      s >> name;
+      c.objects.push_back(name);
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
+  ScratchDir dir;
+  const std::string obj = dir.file("scene.obj");
+  constexpr uint32_t kFrame = 4;
+  ProcessResult r = runTidepool("export --validate --frame " + std::to_string(kFrame) + " --out " + obj, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const scene::Scene s = scene::defaultScene();
+  const uint32_t n = s.water.grid;
+  const ObjContents c = readObj(obj);
+  EXPECT_EQ(c.objects, (std::vector<std::string>{"ground", "water"}));
+  ASSERT_EQ(c.vertices.size(), 4u + size_t(n) * n);
+  EXPECT_EQ(c.faces, 2u + 2u * size_t(n - 1) * (n - 1));
+
+  // The water's heights against the double-precision reference run for the
+  // same frames (float32 round-off over a few steps).
+  sim::ReferenceSim reference(render::waterParams(s.water), render::waterInitialState(s.water));
+  reference.steps(uint64_t(kFrame) * render::waterSubsteps(s.water), render::waterStep(s.water));
+  double worst = 0.0, moved = 0.0;
+  for (size_t k = 0; k < size_t(n) * n; ++k) {
+    worst = std::max(worst, std::abs(double(c.vertices[4 + k].y) - (s.water.level + reference.u()[k])));
+    moved = std::max(moved, std::abs(double(c.vertices[4 + k].y) - s.water.level));
+  }
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GT(moved, 0.01);  // the drops are there
+  // Cell (i, j) sits at world ((i + 1/2) h - L/2, (j + 1/2) h - L/2).
+  const float h = s.water.extent / float(n);
+  EXPECT_FLOAT_EQ(c.vertices[4 + n + 2].x, 2.5f * h - 0.5f * s.water.extent);
+  EXPECT_FLOAT_EQ(c.vertices[4 + n + 2].z, 1.5f * h - 0.5f * s.water.extent);
+}
+
+TEST(ExportCli, PlyHasAConsistentHeader) {
+  ScratchDir dir;
+  const std::string ply = dir.file("scene.ply");
+  ASSERT_EQ(runTidepool("export --out " + ply, dir).exitCode, 0);
+  std::ifstream in(ply);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const uint32_t n = scene::defaultScene().water.grid;
+  EXPECT_NE(text.find("element vertex " + std::to_string(4 + n * n) + "\n"), std::string::npos);
+  EXPECT_NE(text.find("element face " + std::to_string(2 + 2 * (n - 1) * (n - 1)) + "\n"), std::string::npos);
+  const size_t body = text.find("end_header\n") + 11;
+  EXPECT_EQ(size_t(lineCount(text.substr(body))), size_t(4 + n * n + 2 + 2 * (n - 1) * (n - 1)));
+}
+
+TEST(ExportCli, BadOutputsFailCleanly) {
+  ScratchDir dir;
+  writeText(dir.file("broken.json"), "{\"water\": {\"grid\": \"many\"}}");
+  const std::vector<std::string> files{"broken.json"};
+  EXPECT_NE(expectCleanFailure("export --out " + dir.file("scene.stl"), dir, files).find(".obj or .ply"),
+            std::string::npos);
+  expectCleanFailure("export --out /nonexistent-dir/scene.obj", dir, files);
+  expectCleanFailure("export", dir, files);
+  EXPECT_NE(expectCleanFailure("export --scene " + dir.file("broken.json") + " --out " + dir.file("x.obj"), dir, files)
+                .find("water.grid"),
+            std::string::npos);
+}
+
+}  // namespace tp::test
