@@ -4,10 +4,11 @@
 #include "lib/ground_shading.glsl"
 
 layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(push_constant) uniform Push { GroundParams ground; };
 
 void main() {
-  color = vec4(groundRadiance(ground, frame, worldPosition.xz, fwidth(worldPosition.xz)), 1.0);
+  color = vec4(groundRadiance(ground, frame, worldPosition.xz, fwidth(worldPosition.xz), normalize(worldNormal)), 1.0);
 }

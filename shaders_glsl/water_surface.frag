@@ -32,7 +32,7 @@ void main() {
   if (dot(t, t) > 0.0 && t.y < 0.0 && worldPosition.y > floorY) {
     const float s = (floorY - worldPosition.y) / t.y;
     const vec3 hit = worldPosition + s * t;
-    transmitted = groundRadiance(surface.ground, frame, hit.xz, fwidth(hit.xz)) * exp(-surface.absorption.rgb * s);
+    transmitted = groundRadiance(surface.ground, frame, hit.xz, fwidth(hit.xz), vec3(0.0, 1.0, 0.0)) * exp(-surface.absorption.rgb * s);
   }
   // Total internal reflection cannot happen from above; a refracted ray that
   // never reaches the floor sees nothing (black depths).

@@ -52,6 +52,24 @@ TEST(Cli, RenderWritesExrPngAndProfile) {
   EXPECT_EQ(preview.channels.size(), 4u);
 }
 
+TEST(Cli, AovsAreFloatChannelsAfterRgba) {
+  ScratchDir dir;
+  const std::string exr = dir.file("aov.exr");
+  ProcessResult r = runTidepool("render --validate --width 64 --height 40 --aov P,Z,N --out " + exr, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto in = OIIO::ImageInput::open(exr);
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.channelnames,
+            (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z", "P.x", "P.y", "P.z"}));
+  ASSERT_EQ(spec.channelformats.size(), 11u);
+  EXPECT_EQ(spec.channelformats[0], OIIO::TypeDesc::HALF);
+  EXPECT_EQ(spec.channelformats[4], OIIO::TypeDesc::FLOAT);
+  EXPECT_EQ(spec.channelformats[10], OIIO::TypeDesc::FLOAT);
+  ScratchDir again;
+  EXPECT_NE(expectCleanFailure("render --aov Z,Q --out " + again.file("x.exr"), again, {}).find("Q"), std::string::npos);
+}
+
 TEST(Cli, SameFrameTwiceGivesIdenticalPixels) {
   ScratchDir dir;
   const std::string a = dir.file("a.exr"), b = dir.file("b.exr");

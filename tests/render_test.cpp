@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <glm/gtc/constants.hpp>
 
 #include "gpu_test.hpp"
@@ -255,6 +256,69 @@ TEST_F(WaterRenderTest, FramesAreDeterministicAndTheWaterMoves) {
   calm.water.drops.clear();
   render::Renderer c(ctx(), calm, 96, 64);
   EXPECT_EQ(c.render({.frame = 0}).rgba, c.render({.frame = 12}).rgba);  // nothing disturbs flat water
+}
+
+}  // namespace tp::test
+
+namespace tp::test {
+
+using AovTest = GpuTest;
+
+// World position, normal and view depth against each pixel's ray cast on the
+// CPU against the flat water square and the ground plane.
+TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
+  scene::Scene s = scene::defaultScene();
+  s.water.drops.clear();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight, {.aovs = true});
+  const auto frame = renderer.render({.frame = 3, .hdr = false, .aovs = true});
+  ASSERT_EQ(frame.position.size(), size_t(kWidth) * kHeight * 4);
+  const auto u = render::frameUniforms(s, kWidth, kHeight);
+  const glm::vec3 eye(u.cameraPosition);
+  const float half = 0.5f * s.water.extent;
+  int water = 0, ground = 0, sky = 0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      const glm::vec3 d = pixelRay(u, x, y);
+      const size_t k = (size_t(y) * kWidth + x) * 4;
+      const glm::vec3 p(frame.position[k], frame.position[k + 1], frame.position[k + 2]);
+      const glm::vec3 n(frame.normal[k], frame.normal[k + 1], frame.normal[k + 2]);
+      const float z = frame.position[k + 3];
+      std::optional<glm::vec3> hit;
+      bool nearEdge = false;
+      if (d.y < 0.0f) {
+        const glm::vec3 w = eye + ((s.water.level - eye.y) / d.y) * d;
+        if (std::abs(w.x) < half && std::abs(w.z) < half) hit = w;
+        nearEdge = std::abs(std::abs(w.x) - half) < 0.05f || std::abs(std::abs(w.z) - half) < 0.05f;
+        if (!hit) {
+          const glm::vec3 g = eye + ((s.ground.height - eye.y) / d.y) * d;
+          if (std::abs(g.x) < s.ground.halfExtent && std::abs(g.z) < s.ground.halfExtent) hit = g;
+        }
+      }
+      if (nearEdge) continue;
+      if (!hit) {
+        if (d.y > 0.01f) {  // clearly sky
+          EXPECT_TRUE(std::isinf(z) && std::isinf(p.x)) << x << "," << y;
+          EXPECT_EQ(n, glm::vec3(0.0f)) << x << "," << y;
+          ++sky;
+        }
+        continue;
+      }
+      const float distance = glm::length(*hit - eye);
+      if (distance > 30.0f) continue;  // far grazing pixels: one pixel spans metres
+      ASSERT_LT(glm::length(p - *hit), 1e-3f * (1.0f + distance)) << x << "," << y;
+      ASSERT_LT(glm::length(n - glm::vec3(0.0f, 1.0f, 0.0f)), 1e-5f) << x << "," << y;
+      ASSERT_NEAR(z, -(u.view * glm::vec4(*hit, 1.0f)).z, 1e-3f * (1.0f + distance)) << x << "," << y;
+      (hit->y > 0.5f * s.water.level ? water : ground)++;
+    }
+  }
+  EXPECT_GT(water, 2000);
+  EXPECT_GT(ground, 2000);
+  EXPECT_GT(sky, 500);
+
+  // A frame that does not ask for them does not pay for them.
+  const auto plain = renderer.render({.frame = 3, .hdr = true});
+  for (const auto& pass : plain.passes) EXPECT_NE(pass.name, "aov");
+  EXPECT_TRUE(plain.position.empty());
 }
 
 }  // namespace tp::test

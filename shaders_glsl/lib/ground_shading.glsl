@@ -22,13 +22,13 @@ float filteredChecker(vec2 p, vec2 w) {
   return 0.5 - 0.5 * wave.x * wave.y;
 }
 
-// Radiance leaving the ground at world xz (checker coordinates footprint w, in
-// squares), lit by the sun and the sky from above.
-vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint) {
+// Radiance leaving the ground at world xz (pixel footprint in metres) with
+// normal n, lit by the sun and by the sky's irradiance on an up-facing surface.
+vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n) {
   vec2 p = xz / ground.plane.z;
   float odd = filteredChecker(p, footprint / ground.plane.z);
   vec3 albedo = mix(ground.albedoA.rgb, ground.albedoB.rgb, odd);
-  vec3 irradiance = frame.sunIrradiance.rgb * max(frame.sunDirection.y, 0.0) + frame.skyIrradiance.rgb;
+  vec3 irradiance = frame.sunIrradiance.rgb * max(dot(n, frame.sunDirection.xyz), 0.0) + frame.skyIrradiance.rgb;
   return albedo / GROUND_PI * irradiance;
 }
 

@@ -1,5 +1,6 @@
 #include "app/render_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -17,17 +18,45 @@ constexpr uint32_t kMaxSide = 16384;
 constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
 
 void printProfile(const render::RenderedFrame& frame) {
-  std::printf("%-16s %10s\n", "pass", "GPU ms");
+  std::printf("%-20s %10s\n", "pass", "GPU ms");
   double total = 0.0;
   for (const auto& pass : frame.passes) {
     if (std::isnan(pass.milliseconds)) {
-      std::printf("%-16s %10s\n", pass.name.c_str(), "n/a");
+      std::printf("%-20s %10s\n", pass.name.c_str(), "n/a");
     } else {
-      std::printf("%-16s %10.3f\n", pass.name.c_str(), pass.milliseconds);
+      std::printf("%-20s %10.3f\n", pass.name.c_str(), pass.milliseconds);
       total += pass.milliseconds;
     }
   }
-  std::printf("%-16s %10.3f\n", "total", total);
+  std::printf("%-20s %10.3f\n", "total", total);
+}
+
+// RGBA, then each requested AOV's channels (layer.channel names), interleaved.
+io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<std::string>& aovs) {
+  struct Channel {
+    std::string name;
+    const std::vector<float>* source;
+    int component;
+  };
+  std::vector<Channel> channels{{"R", &frame.rgba, 0}, {"G", &frame.rgba, 1}, {"B", &frame.rgba, 2}, {"A", &frame.rgba, 3}};
+  auto requested = [&](const char* name) { return std::find(aovs.begin(), aovs.end(), name) != aovs.end(); };
+  if (requested("Z")) channels.push_back({"Z", &frame.position, 3});
+  if (requested("N")) {
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string("N.") + "xyz"[c], &frame.normal, c});
+  }
+  if (requested("P")) {
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string("P.") + "xyz"[c], &frame.position, c});
+  }
+  io::FloatImage image{frame.width, frame.height, {}, {}};
+  for (const auto& c : channels) image.channels.push_back(c.name);
+  const size_t pixels = size_t(frame.width) * frame.height;
+  image.pixels.resize(pixels * channels.size());
+  for (size_t p = 0; p < pixels; ++p) {
+    for (size_t c = 0; c < channels.size(); ++c) {
+      image.pixels[p * channels.size() + c] = (*channels[c].source)[p * 4 + channels[c].component];
+    }
+  }
+  return image;
 }
 
 }  // namespace
@@ -51,6 +80,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
       ->type_name("NAME");
   cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
+  cmd->add_option("--aov", o.aovs,
+                  "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
+                  "P (P.x P.y P.z world position); infinite Z and P where nothing is hit")
+      ->delimiter(',')
+      ->type_name("LIST")
+      ->check(CLI::IsMember({"Z", "N", "P"}));
   return cmd;
 }
 
@@ -68,13 +103,16 @@ int runRender(const RenderOptions& o) {
   }
   scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
 
+  const bool aovs = !o.aovs.empty();
   GpuSession session(o.validate, o.device);
-  render::Renderer renderer(session.context(), scene, o.width, o.height);
-  render::RenderedFrame frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty()});
+  render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs});
+  render::RenderedFrame frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs});
 
-  io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, std::move(frame.rgba)};
+  io::FloatImage image = withAovs(frame, o.aovs);
+  std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
+  if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
   io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
-  io::writeExr(o.out, image, o.floatOutput ? io::PixelType::Float : io::PixelType::Half, attributes);
+  io::writeExr(o.out, image, types, attributes);
   std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height, o.floatOutput ? "float" : "half",
               session.context().deviceName().c_str());
   if (!o.png.empty()) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 namespace tp::app {
 
@@ -16,6 +17,7 @@ struct RenderOptions {
   bool validate = false;
   std::string device;
   bool profile = false;
+  std::vector<std::string> aovs;  // Z, N, P
 };
 
 // Adds `tidepool render` and its options to the command line.

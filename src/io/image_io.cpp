@@ -38,15 +38,19 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
 
 }  // namespace
 
-void writeExr(const std::string& path, const FloatImage& image, PixelType type, const ExrAttributes& attributes) {
+void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
+              const ExrAttributes& attributes) {
   requireExtension(path, ".exr");
   const size_t channels = image.channels.size();
-  if (image.pixels.size() != size_t(image.width) * image.height * channels) {
-    throw std::logic_error("writeExr: pixel count does not match the size");
+  if (image.pixels.size() != size_t(image.width) * image.height * channels || channelTypes.size() != channels) {
+    throw std::logic_error("writeExr: pixel or channel-type count does not match");
   }
-  OIIO::ImageSpec spec(int(image.width), int(image.height), int(channels),
-                       type == PixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+  auto typeOf = [](PixelType t) { return t == PixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT; };
+  OIIO::ImageSpec spec(int(image.width), int(image.height), int(channels), typeOf(channelTypes[0]));
   spec.channelnames = image.channels;
+  if (std::any_of(channelTypes.begin(), channelTypes.end(), [&](PixelType t) { return t != channelTypes[0]; })) {
+    for (PixelType t : channelTypes) spec.channelformats.push_back(typeOf(t));
+  }
   spec.alpha_channel = -1;
   for (size_t c = 0; c < channels; ++c) {
     if (image.channels[c] == "A") spec.alpha_channel = int(c);

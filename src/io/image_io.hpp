@@ -23,9 +23,11 @@ struct ExrAttributes {
 };
 
 // Writes an OpenEXR file (zip compressed) through a temporary file renamed
-// into place. The camera matrices become the standard m44f attributes
-// worldToCamera and worldToNDC, in OpenEXR's row-vector convention.
-void writeExr(const std::string& path, const FloatImage& image, PixelType type, const ExrAttributes& attributes = {});
+// into place, each channel as half or float (channelTypes, one per channel).
+// The camera matrices become the standard m44f attributes worldToCamera and
+// worldToNDC, in OpenEXR's row-vector convention.
+void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
+              const ExrAttributes& attributes = {});
 
 // Reads every channel of an image OpenImageIO can read (EXR, HDR) as float.
 // Throws with the path and the reason on a missing, unreadable or truncated file.

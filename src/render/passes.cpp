@@ -2,7 +2,9 @@
 
 #include "gpu/descriptors.hpp"
 
+#include <array>
 #include <functional>
+#include <limits>
 
 namespace tp::render {
 namespace {
@@ -97,33 +99,96 @@ WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx)
                                                  .depthTest = true,
                                                  .depthWrite = true})) {}
 
+static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water) {
+  cmd.bindIndexBuffer(water.indices->handle(), 0, vk::IndexType::eUint32);
+  cmd.drawIndexed(water.indexCount, 1, 0, 0, 0);
+}
+
 void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                               const gpu::Image& depth, std::vector<ResourceRef> stateRefs,
-                               std::function<const gpu::Buffer&()> state, ResourceRef skyRef, const gpu::Image& sky,
-                               vk::Sampler sampler, const gpu::Buffer& frameUniforms, const gpu::Buffer& indices,
-                               uint32_t indexCount, const shader::WaterSurfaceParams& params) const {
+                               const gpu::Image& depth, const WaterDraw& water, ResourceRef skyRef,
+                               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
-  for (ResourceRef r : stateRefs) uses.push_back({r, Use::VertexStorageRead});
-  graph.pass("water", std::move(uses),
-             [this, &color, &depth, state, &sky, sampler, &frameUniforms, &indices, indexCount, params](PassContext& pc) {
+  for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
+  graph.pass("water", std::move(uses), [this, &color, &depth, water, &sky, sampler, &frameUniforms](PassContext& pc) {
+    const auto& cmd = pc.cmd;
+    auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+    auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+    cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                         .layerCount = 1,
+                                         .colorAttachmentCount = 1,
+                                         .pColorAttachments = &colorTarget,
+                                         .pDepthAttachment = &depthTarget});
+    gpu::bindPipeline(cmd, pipeline, water.params);
+    gpu::DescriptorWrites()
+        .uniformBuffer(0, frameUniforms)
+        .sampledImage(1, sky, sampler)
+        .storageBuffer(2, water.state())
+        .bind(cmd, pipeline, pc.descriptors);
+    setViewport(cmd, color.extent);
+    drawWater(cmd, water);
+    cmd.endRendering();
+  });
+}
+
+namespace {
+gpu::GraphicsPipelineDesc aovPipeline(const char* vertexShader, uint32_t pushSize) {
+  return {.vertexShader = vertexShader,
+          .fragmentShader = "aov.frag",
+          .pushSize = pushSize,
+          .colorFormats = {kAovFormat, kAovFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true};
+}
+}  // namespace
+
+AovPass::AovPass(const gpu::Context& ctx, bool withWater)
+    : groundPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("ground.vert", sizeof(shader::GroundParams)))) {
+  if (withWater) waterPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams)));
+}
+
+void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
+                      const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
+                      const gpu::Buffer& frameUniforms, const shader::GroundParams& ground,
+                      const WaterDraw* water) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{
+      {normalRef, Use::ColorWrite}, {positionRef, Use::ColorWrite}, {depthRef, Use::DepthWrite}};
+  if (water) {
+    for (ResourceRef r : water->stateRefs) uses.push_back({r, Use::VertexStorageRead});
+  }
+  std::optional<WaterDraw> waterDraw;
+  if (water) waterDraw = *water;
+  graph.pass("aov", std::move(uses),
+             [this, &normal, &position, &depth, &frameUniforms, ground, waterDraw](PassContext& pc) {
                const auto& cmd = pc.cmd;
-               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+               // Where nothing is hit: no normal, and a position and depth at infinity.
+               const float inf = std::numeric_limits<float>::infinity();
+               vk::RenderingAttachmentInfo targets[] = {
+                   attachment(normal, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                              vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}}),
+                   attachment(position, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                              vk::ClearValue{.color = {std::array<float, 4>{inf, inf, inf, inf}}}),
+               };
+               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                                             vk::ClearValue{.depthStencil = {1.0f, 0}});
+               cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, normal.extent},
                                                     .layerCount = 1,
-                                                    .colorAttachmentCount = 1,
-                                                    .pColorAttachments = &colorTarget,
+                                                    .colorAttachmentCount = 2,
+                                                    .pColorAttachments = targets,
                                                     .pDepthAttachment = &depthTarget});
-               gpu::bindPipeline(cmd, pipeline, params);
-               gpu::DescriptorWrites()
-                   .uniformBuffer(0, frameUniforms)
-                   .sampledImage(1, sky, sampler)
-                   .storageBuffer(2, state())
-                   .bind(cmd, pipeline, pc.descriptors);
-               setViewport(cmd, color.extent);
-               cmd.bindIndexBuffer(indices.handle(), 0, vk::IndexType::eUint32);
-               cmd.drawIndexed(indexCount, 1, 0, 0, 0);
+               setViewport(cmd, normal.extent);
+               gpu::bindPipeline(cmd, groundPipeline, ground);
+               gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
+               cmd.draw(6, 1, 0, 0);
+               if (waterDraw) {
+                 gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
+                 gpu::DescriptorWrites()
+                     .uniformBuffer(0, frameUniforms)
+                     .storageBuffer(2, waterDraw->state())
+                     .bind(cmd, *waterPipeline, pc.descriptors);
+                 drawWater(cmd, *waterDraw);
+               }
                cmd.endRendering();
              });
 }

@@ -2,6 +2,9 @@
 // The passes of the frame. Each owns its pipeline and declares itself into a
 // FrameGraph with the resources it reads and writes; the graph orders them and
 // places the barriers.
+#include <functional>
+#include <optional>
+
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
 #include "render/frame_graph.hpp"
@@ -16,6 +19,7 @@ constexpr vk::Format kHdrFormat = vk::Format::eR32G32B32A32Sfloat;
 constexpr vk::Format kLdrFormat = vk::Format::eR8G8B8A8Unorm;
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 constexpr vk::Format kSkyFormat = vk::Format::eR16G16B16A16Sfloat;
+constexpr vk::Format kAovFormat = vk::Format::eR32G32B32A32Sfloat;
 
 // Compute: the procedural sky into an equirectangular HDR texture.
 struct SkyPass {
@@ -40,16 +44,36 @@ struct GroundPass {
   gpu::Pipeline pipeline;
 };
 
+// What a pass needs to draw the water grid: the state buffers (read in the
+// vertex stage; `state` names the current one at record time) and the indices.
+struct WaterDraw {
+  std::vector<ResourceRef> stateRefs;
+  std::function<const gpu::Buffer&()> state;
+  const gpu::Buffer* indices = nullptr;
+  uint32_t indexCount = 0;
+  shader::WaterSurfaceParams params;
+};
+
 // Graphics: the simulated water surface over the ground, reflecting the sky
-// and refracting the floor. It reads the state buffer in the vertex stage;
-// `state` names the buffer that holds the current state when it records.
+// and refracting the floor.
 struct WaterSurfacePass {
   explicit WaterSurfacePass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, std::vector<ResourceRef> stateRefs, std::function<const gpu::Buffer&()> state,
-               ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms,
-               const gpu::Buffer& indices, uint32_t indexCount, const shader::WaterSurfaceParams& params) const;
+               const gpu::Image& depth, const WaterDraw& water, ResourceRef skyRef, const gpu::Image& sky,
+               vk::Sampler sampler, const gpu::Buffer& frameUniforms) const;
   gpu::Pipeline pipeline;
+};
+
+// Graphics: world normal, world position and view depth of the ground and the
+// water (arbitrary output variables for the EXR), into their own targets.
+// Recorded only when a frame asks for them.
+struct AovPass {
+  AovPass(const gpu::Context& ctx, bool withWater);
+  void declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
+               const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
+               const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const WaterDraw* water) const;
+  gpu::Pipeline groundPipeline;
+  std::optional<gpu::Pipeline> waterPipeline;
 };
 
 // Compute: linear HDR to the 8-bit sRGB preview.

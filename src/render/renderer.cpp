@@ -15,7 +15,7 @@
 namespace tp::render {
 
 struct Renderer::Resources {
-  Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h)
+  Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h, const RendererOptions& options)
       : skyPass(ctx),
         backgroundPass(ctx),
         groundPass(ctx),
@@ -68,15 +68,38 @@ struct Renderer::Resources {
     skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    std::optional<WaterDraw> waterDraw;
     if (water) {
-      std::vector<ResourceRef> stateRefs{graph.buffer("water state 0", water->buffer(0)),
-                                         graph.buffer("water state 1", water->buffer(1))};
-      graph.pass("simulate", {{stateRefs[0], Use::ComputeReadWrite}, {stateRefs[1], Use::ComputeReadWrite}},
+      waterDraw = WaterDraw{{graph.buffer("water state 0", water->buffer(0)), graph.buffer("water state 1", water->buffer(1))},
+                            [this]() -> const gpu::Buffer& { return water->current(); },
+                            &indices,
+                            indexCount,
+                            waterSurfaceParams(scene)};
+      graph.pass("simulate",
+                 {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
                  [this](PassContext& pc) { water->recordSteps(pc.cmd, pendingSteps, waterStep); });
       waterPass.emplace(ctx);
-      waterPass->declare(graph, colorRef, color, depthRef, depth, stateRefs,
-                         [this]() -> const gpu::Buffer& { return water->current(); }, skyRef, sky, *sampler, uniforms,
-                         indices, indexCount, waterSurfaceParams(scene));
+      waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, skyRef, sky, *sampler, uniforms);
+    }
+    if (options.aovs) {
+      const vk::Extent2D extent{w, h};
+      const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc;
+      aovNormal = gpu::createImage2D(ctx, extent, kAovFormat, usage, "normal AOV target");
+      aovPosition = gpu::createImage2D(ctx, extent, kAovFormat, usage, "position AOV target");
+      aovDepth = gpu::createImage2D(ctx, extent, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                                    "AOV depth target");
+      normalReadback = gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 16, vk::BufferUsageFlagBits::eTransferDst,
+                                         gpu::MemoryUse::Readback, "normal AOV readback");
+      positionReadback = gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 16, vk::BufferUsageFlagBits::eTransferDst,
+                                           gpu::MemoryUse::Readback, "position AOV readback");
+      auto normalRef = graph.image("normal", aovNormal), positionRef = graph.image("position", aovPosition);
+      normalReadbackRef = graph.buffer("normal readback", normalReadback);
+      positionReadbackRef = graph.buffer("position readback", positionReadback);
+      aovPass.emplace(ctx, waterDraw.has_value());
+      aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
+                       aovDepth, uniforms, ground, waterDraw ? &*waterDraw : nullptr);
+      declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
+      declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
     tonemapPass.declare(graph, colorRef, color, ldrRef, ldr, scene.render.exposure);
     declareReadback(graph, "readback hdr", colorRef, color, colorReadbackRef, colorReadback);
@@ -95,6 +118,11 @@ struct Renderer::Resources {
   // and the steps the next frame takes to reach its frame number.
   std::optional<sim::GpuStepper> water;
   std::optional<WaterSurfacePass> waterPass;
+  // Arbitrary output variables, when the renderer was made with them.
+  std::optional<AovPass> aovPass;
+  gpu::Image aovNormal, aovPosition, aovDepth;
+  gpu::Buffer normalReadback, positionReadback;
+  ResourceRef normalReadbackRef, positionReadbackRef;
   gpu::Buffer indices;
   uint32_t indexCount = 0;
   double waterStep = 0.0;
@@ -105,9 +133,10 @@ struct Renderer::Resources {
   ResourceRef colorRef, colorReadbackRef, ldrReadbackRef;
 };
 
-Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height)
+Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
+                   const RendererOptions& options)
     : ctx_(ctx), scene_(scene), width_(width), height_(height),
-      res_(std::make_unique<Resources>(ctx, scene, width, height)) {}
+      res_(std::make_unique<Resources>(ctx, scene, width, height, options)) {}
 
 Renderer::~Renderer() = default;
 
@@ -133,6 +162,11 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   std::vector<ResourceRef> requested;
   if (request.hdr) requested.push_back(res_->colorReadbackRef);
   if (request.ldr) requested.push_back(res_->ldrReadbackRef);
+  if (request.aovs) {
+    if (!res_->aovPass) throw std::logic_error("AOVs requested from a renderer made without them");
+    requested.push_back(res_->normalReadbackRef);
+    requested.push_back(res_->positionReadbackRef);
+  }
 
   gpu::GpuTimer timer(ctx_, 16);
   std::vector<std::string> names;
@@ -154,6 +188,12 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   if (request.ldr) {
     out.srgb.resize(pixels * 4);
     std::memcpy(out.srgb.data(), res_->ldrReadback.mapped, pixels * 4);
+  }
+  if (request.aovs) {
+    out.normal.resize(pixels * 4);
+    out.position.resize(pixels * 4);
+    std::memcpy(out.normal.data(), res_->normalReadback.mapped, pixels * 16);
+    std::memcpy(out.position.data(), res_->positionReadback.mapped, pixels * 16);
   }
   return out;
 }

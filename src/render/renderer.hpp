@@ -12,8 +12,13 @@ namespace tp::render {
 
 struct FrameRequest {
   uint32_t frame = 0;
-  bool hdr = true;   // read back the linear RGBA image
-  bool ldr = false;  // read back the tonemapped sRGB preview
+  bool hdr = true;    // read back the linear RGBA image
+  bool ldr = false;   // read back the tonemapped sRGB preview
+  bool aovs = false;  // read back world normal, world position and view depth (needs RendererOptions::aovs)
+};
+
+struct RendererOptions {
+  bool aovs = false;  // make the targets and the pass for arbitrary output variables
 };
 
 struct RenderedFrame {
@@ -21,6 +26,8 @@ struct RenderedFrame {
   uint32_t height = 0;
   std::vector<float> rgba;        // linear, scene-referred RGBA; rows top to bottom
   std::vector<std::uint8_t> srgb; // RGBA8 sRGB preview, when requested
+  std::vector<float> normal;      // xyz0 world normal per pixel, when AOVs are requested (0 where nothing is hit)
+  std::vector<float> position;    // xyz world position and w view depth Z (infinite where nothing is hit)
   std::vector<RecordedPass> passes;
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
@@ -30,7 +37,8 @@ struct RenderedFrame {
 // each render() records only the passes its request needs.
 class Renderer {
  public:
-  Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height);
+  Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
+           const RendererOptions& options = {});
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
 

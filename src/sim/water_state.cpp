@@ -130,7 +130,7 @@ void writeStateExr(const std::string& path, const WaterState& s) {
     image.pixels[2 * k] = s.u[k];
     image.pixels[2 * k + 1] = s.v[k];
   }
-  io::writeExr(path, image, io::PixelType::Float);
+  io::writeExr(path, image, {io::PixelType::Float, io::PixelType::Float});
 }
 
 WaterState readStateExr(const std::string& path) {
