@@ -12,10 +12,14 @@
   using uint = std::uint32_t;
 #define TP_END }
 #define TP_INLINE inline
+#define TP_PRECISE
 #else
 #define TP_BEGIN
 #define TP_END
 #define TP_INLINE
+// Keeps the GPU from fusing or reordering, so shared functions give the same
+// bits as C++ (compiled as ISO C++: no contraction there either).
+#define TP_PRECISE precise
 #endif
 
 #endif
