@@ -1,11 +1,12 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The water surface seen from above: the sky reflected (equirectangular
-// lookup of the reflected ray) and the floor refracted (Snell's law, the
-// refracted ray cast exactly against the ground plane), mixed by Schlick's
-// Fresnel, the refracted light attenuated along its path through the water.
+// lookup of the reflected ray) and the pool refracted (Snell's law, the
+// refracted ray cast against the walls exactly and the terrain floor by
+// marching and bisection), mixed by Schlick's Fresnel, the refracted light
+// attenuated along its path through the water.
 #include "lib/equirect.glsl"
-#include "lib/ground_shading.glsl"
+#include "lib/pool_shading.glsl"
 #include "shared/water_surface.h"
 
 layout(location = 0) in vec3 worldPosition;
@@ -13,6 +14,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D skyTexture;
+layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
@@ -28,13 +30,11 @@ void main() {
 
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / ior);
-  const float floorY = surface.ground.plane.y;
-  if (dot(t, t) > 0.0 && t.y < 0.0 && worldPosition.y > floorY) {
-    const float s = (floorY - worldPosition.y) / t.y;
-    const vec3 hit = worldPosition + s * t;
-    transmitted = groundRadiance(surface.ground, frame, hit.xz, fwidth(hit.xz), vec3(0.0, 1.0, 0.0)) * exp(-surface.absorption.rgb * s);
+  if (dot(t, t) > 0.0 && t.y < 0.0) {  // from above there is no total internal reflection
+    const PoolHit hit = tracePool(pool, worldPosition, t);
+    const vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz))
+                                    : poolWallRadiance(pool, frame, hit.normal);
+    transmitted = radiance * exp(-surface.absorption.rgb * hit.distance);
   }
-  // Total internal reflection cannot happen from above; a refracted ray that
-  // never reaches the floor sees nothing (black depths).
   color = vec4(mix(transmitted, reflected, fresnel), 1.0);
 }

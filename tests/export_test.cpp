@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "process.hpp"
+#include "render/pool_model.hpp"
 #include "render/water_model.hpp"
 #include "sim/reference_sim.hpp"
 
@@ -51,9 +52,12 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
   const scene::Scene s = scene::defaultScene();
   const uint32_t n = s.water.grid;
   const ObjContents c = readObj(obj);
-  EXPECT_EQ(c.objects, (std::vector<std::string>{"ground", "water"}));
-  ASSERT_EQ(c.vertices.size(), 4u + size_t(n) * n);
-  EXPECT_EQ(c.faces, 2u + 2u * size_t(n - 1) * (n - 1));
+  EXPECT_EQ(c.objects, (std::vector<std::string>{"ground", "pool_walls", "pool_floor", "water"}));
+  const size_t floorVertices = size_t(render::kPoolFloorGrid) * render::kPoolFloorGrid;
+  const size_t first = 16 + 16 + floorVertices;  // the water's first vertex
+  ASSERT_EQ(c.vertices.size(), first + size_t(n) * n);
+  EXPECT_EQ(c.faces, 8u + 8u + 2u * size_t(render::kPoolFloorGrid - 1) * (render::kPoolFloorGrid - 1) +
+                         2u * size_t(n - 1) * (n - 1));
 
   // The water's heights against the double-precision reference run for the
   // same frames (float32 round-off over a few steps).
@@ -61,15 +65,24 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
   reference.steps(uint64_t(kFrame) * render::waterSubsteps(s.water), render::waterStep(s.water));
   double worst = 0.0, moved = 0.0;
   for (size_t k = 0; k < size_t(n) * n; ++k) {
-    worst = std::max(worst, std::abs(double(c.vertices[4 + k].y) - (s.water.level + reference.u()[k])));
-    moved = std::max(moved, std::abs(double(c.vertices[4 + k].y) - s.water.level));
+    worst = std::max(worst, std::abs(double(c.vertices[first + k].y) - (s.water.level + reference.u()[k])));
+    moved = std::max(moved, std::abs(double(c.vertices[first + k].y) - s.water.level));
   }
   EXPECT_LT(worst, 1e-6);
   EXPECT_GT(moved, 0.01);  // the drops are there
   // Cell (i, j) sits at world ((i + 1/2) h - L/2, (j + 1/2) h - L/2).
   const float h = s.water.extent / float(n);
-  EXPECT_FLOAT_EQ(c.vertices[4 + n + 2].x, 2.5f * h - 0.5f * s.water.extent);
-  EXPECT_FLOAT_EQ(c.vertices[4 + n + 2].z, 1.5f * h - 0.5f * s.water.extent);
+  EXPECT_FLOAT_EQ(c.vertices[first + n + 2].x, 2.5f * h - 0.5f * s.water.extent);
+  EXPECT_FLOAT_EQ(c.vertices[first + n + 2].z, 1.5f * h - 0.5f * s.water.extent);
+  // The floor follows the terrain: heights spread over most of its amplitude around the mean depth.
+  float low = 1e9f, high = -1e9f;
+  for (size_t k = 32; k < first; ++k) {
+    low = std::min(low, c.vertices[k].y);
+    high = std::max(high, c.vertices[k].y);
+  }
+  EXPECT_GT(high - low, 0.3f * s.terrain.amplitude);
+  EXPECT_GE(low, s.ground.height - s.pool.depth - 0.5f * s.terrain.amplitude);
+  EXPECT_LE(high, s.ground.height - s.pool.depth + 0.5f * s.terrain.amplitude);
 }
 
 TEST(ExportCli, PlyHasAConsistentHeader) {
@@ -78,11 +91,12 @@ TEST(ExportCli, PlyHasAConsistentHeader) {
   ASSERT_EQ(runTidepool("export --out " + ply, dir).exitCode, 0);
   std::ifstream in(ply);
   std::string text((std::istreambuf_iterator<char>(in)), {});
-  const uint32_t n = scene::defaultScene().water.grid;
-  EXPECT_NE(text.find("element vertex " + std::to_string(4 + n * n) + "\n"), std::string::npos);
-  EXPECT_NE(text.find("element face " + std::to_string(2 + 2 * (n - 1) * (n - 1)) + "\n"), std::string::npos);
+  const uint32_t n = scene::defaultScene().water.grid, f = render::kPoolFloorGrid;
+  const uint32_t vertices = 32 + f * f + n * n, faces = 16 + 2 * (f - 1) * (f - 1) + 2 * (n - 1) * (n - 1);
+  EXPECT_NE(text.find("element vertex " + std::to_string(vertices) + "\n"), std::string::npos);
+  EXPECT_NE(text.find("element face " + std::to_string(faces) + "\n"), std::string::npos);
   const size_t body = text.find("end_header\n") + 11;
-  EXPECT_EQ(size_t(lineCount(text.substr(body))), size_t(4 + n * n + 2 + 2 * (n - 1) * (n - 1)));
+  EXPECT_EQ(size_t(lineCount(text.substr(body))), size_t(vertices + faces));
 }
 
 TEST(ExportCli, BadOutputsFailCleanly) {

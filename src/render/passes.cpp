@@ -23,7 +23,52 @@ vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout 
                                      .clearValue = clear};
 }
 
+constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the pool's hole
+constexpr uint32_t kWallVertices = 24;    // pool_walls.vert: four quads
+
+void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
+              const gpu::Pipeline& floor, const gpu::Buffer& frameUniforms, const PoolDraw& pool) {
+  cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
+  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms).bind(cmd, walls, arena);
+  cmd.draw(kWallVertices, 1, 0, 0);
+  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
+  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms).bind(cmd, floor, arena);
+  cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
+  cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
+}
+
+gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize) {
+  return {.vertexShader = vertexShader,
+          .fragmentShader = fragmentShader,
+          .pushSize = pushSize,
+          .colorFormats = {kHdrFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true};
+}
+
 }  // namespace
+
+PoolPass::PoolPass(const gpu::Context& ctx)
+    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0))),
+      floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
+
+void PoolPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+                       const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const {
+  graph.pass("pool", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
+             [this, &color, &depth, &frameUniforms, pool](PassContext& pc) {
+               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                                       .layerCount = 1,
+                                                       .colorAttachmentCount = 1,
+                                                       .pColorAttachments = &colorTarget,
+                                                       .pDepthAttachment = &depthTarget});
+               setViewport(pc.cmd, color.extent);
+               drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool);
+               pc.cmd.endRendering();
+             });
+}
 
 SkyPass::SkyPass(const gpu::Context& ctx)
     : pipeline(gpu::createComputePipeline(ctx, "sky.comp", sizeof(shader::SkyParams))) {}
@@ -85,7 +130,7 @@ void GroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Ima
                gpu::bindPipeline(cmd, pipeline, params);
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, pipeline, pc.descriptors);
                setViewport(cmd, color.extent);
-               cmd.draw(6, 1, 0, 0);
+               cmd.draw(kGroundVertices, 1, 0, 0);
                cmd.endRendering();
              });
 }
@@ -105,12 +150,13 @@ static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water
 }
 
 void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                               const gpu::Image& depth, const WaterDraw& water, ResourceRef skyRef,
-                               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms) const {
+                               const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool,
+                               ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler,
+                               const gpu::Buffer& frameUniforms) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
-  graph.pass("water", std::move(uses), [this, &color, &depth, water, &sky, sampler, &frameUniforms](PassContext& pc) {
+  graph.pass("water", std::move(uses), [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms](PassContext& pc) {
     const auto& cmd = pc.cmd;
     auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
     auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
@@ -124,6 +170,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
         .uniformBuffer(0, frameUniforms)
         .sampledImage(1, sky, sampler)
         .storageBuffer(2, water.state())
+        .uniformBuffer(3, *pool.uniforms)
         .bind(cmd, pipeline, pc.descriptors);
     setViewport(cmd, color.extent);
     drawWater(cmd, water);
@@ -143,14 +190,18 @@ gpu::GraphicsPipelineDesc aovPipeline(const char* vertexShader, uint32_t pushSiz
 }
 }  // namespace
 
-AovPass::AovPass(const gpu::Context& ctx, bool withWater)
+AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
     : groundPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("ground.vert", sizeof(shader::GroundParams)))) {
-  if (withWater) waterPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams)));
+  if (withPoolAndWater) {
+    wallsPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", 0));
+    floorPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_floor.vert", sizeof(glm::uvec4)));
+    waterPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams)));
+  }
 }
 
 void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                       const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
-                      const gpu::Buffer& frameUniforms, const shader::GroundParams& ground,
+                      const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
                       const WaterDraw* water) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {normalRef, Use::ColorWrite}, {positionRef, Use::ColorWrite}, {depthRef, Use::DepthWrite}};
@@ -159,8 +210,10 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
   }
   std::optional<WaterDraw> waterDraw;
   if (water) waterDraw = *water;
+  std::optional<PoolDraw> poolDraw;
+  if (pool) poolDraw = *pool;
   graph.pass("aov", std::move(uses),
-             [this, &normal, &position, &depth, &frameUniforms, ground, waterDraw](PassContext& pc) {
+             [this, &normal, &position, &depth, &frameUniforms, ground, poolDraw, waterDraw](PassContext& pc) {
                const auto& cmd = pc.cmd;
                // Where nothing is hit: no normal, and a position and depth at infinity.
                const float inf = std::numeric_limits<float>::infinity();
@@ -180,7 +233,8 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                setViewport(cmd, normal.extent);
                gpu::bindPipeline(cmd, groundPipeline, ground);
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
-               cmd.draw(6, 1, 0, 0);
+               cmd.draw(kGroundVertices, 1, 0, 0);
+               if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw);
                if (waterDraw) {
                  gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
                  gpu::DescriptorWrites()

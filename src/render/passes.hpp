@@ -44,6 +44,22 @@ struct GroundPass {
   gpu::Pipeline pipeline;
 };
 
+// What a pass needs to draw the pool: its uniform buffer and the floor grid's indices.
+struct PoolDraw {
+  const gpu::Buffer* uniforms = nullptr;
+  const gpu::Buffer* floorIndices = nullptr;
+  uint32_t floorIndexCount = 0;
+  uint32_t floorGrid = 0;  // vertices per side
+};
+
+// Graphics: the pool's inner walls and its terrain floor.
+struct PoolPass {
+  explicit PoolPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const;
+  gpu::Pipeline walls, floor;
+};
+
 // What a pass needs to draw the water grid: the state buffers (read in the
 // vertex stage; `state` names the current one at record time) and the indices.
 struct WaterDraw {
@@ -59,8 +75,8 @@ struct WaterDraw {
 struct WaterSurfacePass {
   explicit WaterSurfacePass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const WaterDraw& water, ResourceRef skyRef, const gpu::Image& sky,
-               vk::Sampler sampler, const gpu::Buffer& frameUniforms) const;
+               const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool, ResourceRef skyRef,
+               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms) const;
   gpu::Pipeline pipeline;
 };
 
@@ -68,12 +84,13 @@ struct WaterSurfacePass {
 // water (arbitrary output variables for the EXR), into their own targets.
 // Recorded only when a frame asks for them.
 struct AovPass {
-  AovPass(const gpu::Context& ctx, bool withWater);
+  AovPass(const gpu::Context& ctx, bool withPoolAndWater);
   void declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
-               const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const WaterDraw* water) const;
+               const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
+               const WaterDraw* water) const;
   gpu::Pipeline groundPipeline;
-  std::optional<gpu::Pipeline> waterPipeline;
+  std::optional<gpu::Pipeline> wallsPipeline, floorPipeline, waterPipeline;
 };
 
 // Compute: linear HDR to the 8-bit sRGB preview.

@@ -8,6 +8,7 @@
 #include "render/frame_uniforms.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
+#include "render/pool_model.hpp"
 #include "render/water_model.hpp"
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
@@ -61,13 +62,25 @@ struct Renderer::Resources {
     colorReadbackRef = graph.buffer("color readback", colorReadback);
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
 
-    const auto& g = scene.ground;
-    shader::GroundParams ground{.plane = {g.halfExtent, g.height, g.checkerSize, 0.0f},
-                                .albedoA = glm::vec4(g.albedoA, 0.0f),
-                                .albedoB = glm::vec4(g.albedoB, 0.0f)};
+    const shader::GroundParams ground = groundParams(scene);
     skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    std::optional<PoolDraw> poolDraw;
+    if (hasPool(scene)) {
+      const shader::PoolParams pool = poolParams(scene);
+      poolUniforms = gpu::createBuffer(ctx, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer, gpu::MemoryUse::Upload,
+                                       "pool uniforms");
+      gpu::uploadToBuffer(ctx, poolUniforms, &pool, sizeof(pool));
+      const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
+      floorIndices = gpu::createBuffer(ctx, floorGridIndices.size() * sizeof(uint32_t),
+                                       vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
+                                       gpu::MemoryUse::Device, "pool floor indices");
+      gpu::uploadToBuffer(ctx, floorIndices, floorGridIndices.data(), floorGridIndices.size() * sizeof(uint32_t));
+      poolDraw = PoolDraw{&poolUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid};
+      poolPass.emplace(ctx);
+      poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
+    }
     std::optional<WaterDraw> waterDraw;
     if (water) {
       waterDraw = WaterDraw{{graph.buffer("water state 0", water->buffer(0)), graph.buffer("water state 1", water->buffer(1))},
@@ -79,7 +92,7 @@ struct Renderer::Resources {
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
                  [this](PassContext& pc) { water->recordSteps(pc.cmd, pendingSteps, waterStep); });
       waterPass.emplace(ctx);
-      waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, skyRef, sky, *sampler, uniforms);
+      waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, *poolDraw, skyRef, sky, *sampler, uniforms);
     }
     if (options.aovs) {
       const vk::Extent2D extent{w, h};
@@ -95,9 +108,9 @@ struct Renderer::Resources {
       auto normalRef = graph.image("normal", aovNormal), positionRef = graph.image("position", aovPosition);
       normalReadbackRef = graph.buffer("normal readback", normalReadback);
       positionReadbackRef = graph.buffer("position readback", positionReadback);
-      aovPass.emplace(ctx, waterDraw.has_value());
+      aovPass.emplace(ctx, poolDraw.has_value());
       aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
-                       aovDepth, uniforms, ground, waterDraw ? &*waterDraw : nullptr);
+                       aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr);
       declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
       declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
@@ -118,6 +131,9 @@ struct Renderer::Resources {
   // and the steps the next frame takes to reach its frame number.
   std::optional<sim::GpuStepper> water;
   std::optional<WaterSurfacePass> waterPass;
+  // The pool, when there is water to hold.
+  std::optional<PoolPass> poolPass;
+  gpu::Buffer poolUniforms, floorIndices;
   // Arbitrary output variables, when the renderer was made with them.
   std::optional<AovPass> aovPass;
   gpu::Image aovNormal, aovPosition, aovDepth;

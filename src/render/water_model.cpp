@@ -1,5 +1,7 @@
 #include "render/water_model.hpp"
 
+#include "render/pool_model.hpp"
+
 namespace tp::render {
 
 sim::WaterParams waterParams(const scene::Water& w) {
@@ -38,22 +40,64 @@ std::vector<uint32_t> waterGridIndices(uint32_t n) {
 
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene) {
   const scene::Water& w = scene.water;
-  const scene::Ground& g = scene.ground;
   return shader::WaterSurfaceParams{
       .placement = {-0.5f * w.extent, w.level, -0.5f * w.extent, w.extent / float(w.grid)},
       .absorption = glm::vec4(w.absorption, w.ior),
       .grid = {w.grid, 0u, 0u, 0u},
-      .ground = {.plane = {g.halfExtent, g.height, g.checkerSize, 0.0f},
-                 .albedoA = glm::vec4(g.albedoA, 0.0f),
-                 .albedoB = glm::vec4(g.albedoB, 0.0f)},
   };
 }
 
+shader::GroundParams groundParams(const scene::Scene& scene) {
+  const scene::Ground& g = scene.ground;
+  return {.plane = {g.halfExtent, g.height, g.checkerSize, hasPool(scene) ? 0.5f * scene.water.extent : 0.0f},
+          .albedoA = glm::vec4(g.albedoA, 0.0f),
+          .albedoB = glm::vec4(g.albedoB, 0.0f)};
+}
+
+namespace {
+
+// Appends the quad a, b, c, d (counter-clockwise seen from its front) to a mesh.
+void addQuad(scene::Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+  const uint32_t base = uint32_t(m.positions.size());
+  m.positions.insert(m.positions.end(), {a, b, c, d});
+  m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+}  // namespace
+
 std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water) {
   std::vector<scene::Mesh> meshes;
-  const scene::Ground& g = scene.ground;
-  const float e = g.halfExtent, y = g.height;
-  meshes.push_back({"ground", {{-e, y, -e}, {e, y, -e}, {e, y, e}, {-e, y, e}}, {0, 3, 1, 1, 3, 2}});
+  const shader::GroundParams g = groundParams(scene);
+  const float e = g.plane.x, y = g.plane.y, hole = g.plane.w;
+  // As ground.vert draws it: four trapezoids between the outer square and the hole.
+  scene::Mesh ground{"ground", {}, {}};
+  const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec2 o0 = corners[k] * e, o1 = corners[(k + 1) % 4] * e;
+    const glm::vec2 i0 = corners[k] * hole, i1 = corners[(k + 1) % 4] * hole;
+    addQuad(ground, {o0.x, y, o0.y}, {i0.x, y, i0.y}, {i1.x, y, i1.y}, {o1.x, y, o1.y});
+  }
+  meshes.push_back(std::move(ground));
+  if (hasPool(scene)) {
+    const shader::PoolParams p = poolParams(scene);
+    const float s = p.box.x, top = p.box.y, bottom = shader::poolBottom(p);
+    scene::Mesh walls{"pool_walls", {}, {}};
+    addQuad(walls, {-s, top, -s}, {-s, bottom, -s}, {s, bottom, -s}, {s, top, -s});
+    addQuad(walls, {s, top, -s}, {s, bottom, -s}, {s, bottom, s}, {s, top, s});
+    addQuad(walls, {s, top, s}, {s, bottom, s}, {-s, bottom, s}, {-s, top, s});
+    addQuad(walls, {-s, top, s}, {-s, bottom, s}, {-s, bottom, -s}, {-s, top, -s});
+    meshes.push_back(std::move(walls));
+    // As pool_floor.vert draws it: the same grid and the same height function, bit for bit.
+    scene::Mesh floor{"pool_floor", {}, waterGridIndices(kPoolFloorGrid)};
+    for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
+      for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
+        const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
+        const glm::vec2 xz = (uv * 2.0f - 1.0f) * s;
+        floor.positions.push_back({xz.x, shader::poolFloorHeight(p, xz), xz.y});
+      }
+    }
+    meshes.push_back(std::move(floor));
+  }
   if (water) {
     const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
     const auto cells = sim::toCells(*water, scene.water.extent);

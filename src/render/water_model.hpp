@@ -3,6 +3,7 @@
 
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
+#include "shared/ground.h"
 #include "shared/water_surface.h"
 #include "sim/water_params.hpp"
 #include "sim/water_state.hpp"
@@ -20,9 +21,11 @@ sim::WaterState waterInitialState(const scene::Water& water);
 // Two triangles per grid quad, counter-clockwise seen from above.
 std::vector<uint32_t> waterGridIndices(uint32_t n);
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
+// The ground's push constants, with the pool's hole when there is a pool.
+shader::GroundParams groundParams(const scene::Scene& scene);
 
-// The triangles a frame shows, in world space: the ground square and, when
-// the scene has water, its surface given the simulation state.
+// The triangles a frame shows, in world space: the ground around the pool's
+// hole, the pool's walls and floor, and, given its state, the water surface.
 std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water);
 
 }  // namespace tp::render

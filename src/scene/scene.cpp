@@ -63,6 +63,19 @@ void validateScene(const Scene& s) {
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
   requireRange(w.ior, 1.0f, 3.0f, "water.ior");
   requireNonNegative(w.absorption, "water.absorption");
+  requireRange(s.pool.depth, 1e-3f, 1e3f, "pool.depth");
+  requireNonNegative(s.pool.wallAlbedo, "pool.wall_albedo");
+  requireRange(s.pool.tileSize, 1e-4f, 1e3f, "pool.tile_size");
+  requireNonNegative(s.pool.tileAlbedoA, "pool.tile_albedo_a");
+  requireNonNegative(s.pool.tileAlbedoB, "pool.tile_albedo_b");
+  requireRange(s.terrain.amplitude, 0.0f, 2.0f * s.pool.depth, "terrain.amplitude");
+  requireRange(s.terrain.frequency, 0.0f, 1e3f, "terrain.frequency");
+  requireRange(float(s.terrain.octaves), 1.0f, 16.0f, "terrain.octaves");
+  requireRange(s.terrain.persistence, 0.0f, 1.0f, "terrain.persistence");
+  if (w.enabled && w.level >= s.ground.height) {
+    throw std::runtime_error("water.level " + std::to_string(w.level) + " must be below the pool's rim, the ground at " +
+                             std::to_string(s.ground.height));
+  }
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
     requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");

@@ -34,6 +34,28 @@ struct Ground {
   bool operator==(const Ground&) const = default;
 };
 
+// The pool that holds the water: a square hole in the ground, as wide as the
+// water, with inner walls and a tiled floor shaped by value-noise terrain.
+struct Pool {
+  float depth = 1.2f;  // mean floor depth below the rim (the ground)
+  glm::vec3 wallAlbedo{0.55f, 0.56f, 0.58f};
+  float tileSize = 0.25f;
+  glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
+  glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};
+  bool operator==(const Pool&) const = default;
+};
+
+// The floor's terrain: octaves of bilinear value noise at frequency 2^i,
+// amplitude persistence^i, normalised to [-amplitude/2, amplitude/2].
+struct Terrain {
+  float amplitude = 0.35f;  // metres, peak to peak
+  float frequency = 0.8f;   // of the first octave, 1/m
+  unsigned octaves = 4;
+  float persistence = 0.5f;
+  unsigned seed = 7;
+  bool operator==(const Terrain&) const = default;
+};
+
 struct Drop {
   float x = 0.0f, z = 0.0f;  // world position of the centre
   float radius = 0.3f;
@@ -41,13 +63,13 @@ struct Drop {
   bool operator==(const Drop&) const = default;
 };
 
-// The simulated water: a square of `extent` metres centred on the origin, at
-// rest at height `level`, disturbed by drops at frame 0.
+// The simulated water: a square of `extent` metres centred on the origin (the
+// pool's size), at rest at height `level`, disturbed by drops at frame 0.
 struct Water {
   bool enabled = true;
   unsigned grid = 128;
   float extent = 4.0f;
-  float level = 0.5f;
+  float level = -0.15f;  // rest height of the surface (the rim is the ground's height)
   float waveSpeed = 0.6f;
   float damping = 0.3f;           // 1/s
   std::string boundary = "clamp";
@@ -69,6 +91,8 @@ struct Scene {
   Sky sky;
   Ground ground;
   Water water;
+  Pool pool;
+  Terrain terrain;
   Render render;
   bool operator==(const Scene&) const = default;
 };

@@ -169,6 +169,20 @@ Scene parseScene(const std::string& text, const std::string& origin) {
       d.number("amplitude", drop.amplitude);
     });
   });
+  top.object("pool", [&](ObjectReader& r) {
+    r.number("depth", s.pool.depth);
+    r.vec3("wall_albedo", s.pool.wallAlbedo);
+    r.number("tile_size", s.pool.tileSize);
+    r.vec3("tile_albedo_a", s.pool.tileAlbedoA);
+    r.vec3("tile_albedo_b", s.pool.tileAlbedoB);
+  });
+  top.object("terrain", [&](ObjectReader& r) {
+    r.number("amplitude", s.terrain.amplitude);
+    r.number("frequency", s.terrain.frequency);
+    r.count("octaves", s.terrain.octaves);
+    r.number("persistence", s.terrain.persistence);
+    r.count("seed", s.terrain.seed);
+  });
   top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
   top.finish();
   try {

@@ -1,0 +1,14 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The tiled pool floor, Lambertian (lib/pool_shading.glsl).
+#include "lib/pool_shading.glsl"
+
+layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in vec3 worldNormal;
+layout(location = 0) out vec4 color;
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform Pool { PoolParams pool; };
+
+void main() {
+  color = vec4(poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz)), 1.0);
+}

@@ -1,0 +1,19 @@
+#include "render/pool_model.hpp"
+
+namespace tp::render {
+
+shader::PoolParams poolParams(const scene::Scene& scene) {
+  const scene::Pool& p = scene.pool;
+  const scene::Terrain& t = scene.terrain;
+  return shader::PoolParams{
+      .box = {0.5f * scene.water.extent, scene.ground.height, p.depth, t.amplitude},
+      .terrain = {t.frequency, t.persistence, 0.0f, 0.0f},
+      .noise = {t.octaves, t.seed, kPoolMarchSteps, kPoolBisections},
+      .wallAlbedo = glm::vec4(p.wallAlbedo, 0.0f),
+      .tiles = {.plane = {0.0f, 0.0f, p.tileSize, 0.0f},
+                .albedoA = glm::vec4(p.tileAlbedoA, 0.0f),
+                .albedoB = glm::vec4(p.tileAlbedoB, 0.0f)},
+  };
+}
+
+}  // namespace tp::render
