@@ -7,6 +7,8 @@
 // attenuated along its path through the water.
 #include "lib/equirect.glsl"
 #include "lib/pool_shading.glsl"
+#include "lib/sphere_shading.glsl"
+#include "shared/objects.h"
 #include "shared/water_surface.h"
 
 layout(location = 0) in vec3 worldPosition;
@@ -15,6 +17,7 @@ layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
+layout(binding = 4) uniform Objects { SceneObjects objects; };
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
@@ -32,9 +35,18 @@ void main() {
   const vec3 t = refract(view, n, 1.0 / ior);
   if (dot(t, t) > 0.0 && t.y < 0.0) {  // from above there is no total internal reflection
     const PoolHit hit = tracePool(pool, worldPosition, t);
-    const vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz))
-                                    : poolWallRadiance(pool, frame, hit.normal);
-    transmitted = radiance * exp(-surface.absorption.rgb * hit.distance);
+    vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz))
+                              : poolWallRadiance(pool, frame, hit.normal);
+    float distance = hit.distance;
+    for (uint i = 0u; i < objects.count.x; ++i) {  // a sphere in front of the pool's surfaces
+      const float s = raySphere(worldPosition, normalize(t), objects.spheres[i]);
+      if (s > 0.0 && s < distance) {
+        distance = s;
+        const vec3 p = worldPosition + s * normalize(t);
+        radiance = sphereRadiance(frame, objects.sphereAlbedo[i].rgb, normalize(p - objects.spheres[i].xyz));
+      }
+    }
+    transmitted = radiance * exp(-surface.absorption.rgb * distance);
   }
   color = vec4(mix(transmitted, reflected, fresnel), 1.0);
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "process.hpp"
+#include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 #include "render/water_model.hpp"
 #include "sim/reference_sim.hpp"
@@ -52,12 +53,13 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
   const scene::Scene s = scene::defaultScene();
   const uint32_t n = s.water.grid;
   const ObjContents c = readObj(obj);
-  EXPECT_EQ(c.objects, (std::vector<std::string>{"ground", "pool_walls", "pool_floor", "water"}));
+  EXPECT_EQ(c.objects, (std::vector<std::string>{"ground", "pool_walls", "pool_floor", "sphere0", "water"}));
   const size_t floorVertices = size_t(render::kPoolFloorGrid) * render::kPoolFloorGrid;
-  const size_t first = 16 + 16 + floorVertices;  // the water's first vertex
+  const size_t sphereVertices = size_t(render::kSphereStacks + 1) * (render::kSphereSlices + 1);
+  const size_t first = 16 + 16 + floorVertices + sphereVertices;  // the water's first vertex
   ASSERT_EQ(c.vertices.size(), first + size_t(n) * n);
   EXPECT_EQ(c.faces, 8u + 8u + 2u * size_t(render::kPoolFloorGrid - 1) * (render::kPoolFloorGrid - 1) +
-                         2u * size_t(n - 1) * (n - 1));
+                         2u * render::kSphereStacks * render::kSphereSlices + 2u * size_t(n - 1) * (n - 1));
 
   // The water's heights against the double-precision reference run for the
   // same frames (float32 round-off over a few steps).
@@ -76,7 +78,7 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
   EXPECT_FLOAT_EQ(c.vertices[first + n + 2].z, 1.5f * h - 0.5f * s.water.extent);
   // The floor follows the terrain: heights spread over most of its amplitude around the mean depth.
   float low = 1e9f, high = -1e9f;
-  for (size_t k = 32; k < first; ++k) {
+  for (size_t k = 32; k < 32 + floorVertices; ++k) {
     low = std::min(low, c.vertices[k].y);
     high = std::max(high, c.vertices[k].y);
   }
@@ -92,7 +94,10 @@ TEST(ExportCli, PlyHasAConsistentHeader) {
   std::ifstream in(ply);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   const uint32_t n = scene::defaultScene().water.grid, f = render::kPoolFloorGrid;
-  const uint32_t vertices = 32 + f * f + n * n, faces = 16 + 2 * (f - 1) * (f - 1) + 2 * (n - 1) * (n - 1);
+  const uint32_t sphereVertices = (render::kSphereStacks + 1) * (render::kSphereSlices + 1);
+  const uint32_t sphereFaces = 2 * render::kSphereStacks * render::kSphereSlices;
+  const uint32_t vertices = 32 + f * f + sphereVertices + n * n;
+  const uint32_t faces = 16 + 2 * (f - 1) * (f - 1) + sphereFaces + 2 * (n - 1) * (n - 1);
   EXPECT_NE(text.find("element vertex " + std::to_string(vertices) + "\n"), std::string::npos);
   EXPECT_NE(text.find("element face " + std::to_string(faces) + "\n"), std::string::npos);
   const size_t body = text.find("end_header\n") + 11;

@@ -24,6 +24,7 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 scene::Scene uniformSkyScene() {
   scene::Scene s = scene::defaultScene();
   s.water.enabled = false;
+  s.spheres.clear();
   s.sky.zenith = s.sky.horizon = glm::vec3(0.4f, 0.5f, 0.7f);
   s.sky.glow = glm::vec3(0.0f);
   return s;
@@ -116,14 +117,14 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return n;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "pool", "simulate", "water", "readback hdr"}));
+  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "readback hdr"}));
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both), (std::vector<std::string>{"sky", "background", "ground", "pool", "simulate", "water", "tonemap",
+  EXPECT_EQ(names(both), (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "tonemap",
                                                    "readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
   EXPECT_EQ(names(ldrOnly),
-            (std::vector<std::string>{"sky", "background", "ground", "pool", "simulate", "water", "tonemap", "readback ldr"}));
+            (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "tonemap", "readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
   for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
@@ -133,7 +134,7 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   dry.water.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "background", "ground", "readback hdr"}));
+            (std::vector<std::string>{"sky", "background", "ground", "spheres", "readback hdr"}));
 }
 
 TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
@@ -174,6 +175,7 @@ scene::Scene flatWaterFromAbove() {
   s.camera.fovYDegrees = 60.0f;
   s.water.drops.clear();
   s.terrain.amplitude = 0.0f;
+  s.spheres.clear();
   return s;
 }
 
@@ -277,7 +279,7 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
   const auto u = render::frameUniforms(s, kWidth, kHeight);
   const glm::vec3 eye(u.cameraPosition);
   const float half = 0.5f * s.water.extent;
-  int water = 0, ground = 0, sky = 0;
+  int water = 0, ground = 0, sky = 0, spherePixels = 0;
   for (uint32_t y = 0; y < kHeight; ++y) {
     for (uint32_t x = 0; x < kWidth; ++x) {
       const glm::vec3 d = pixelRay(u, x, y);
@@ -303,8 +305,32 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
           continue;  // the rim, or a wall
         }
       }
+      // The sphere, where it is in front; its silhouette is left out.
+      bool onSphere = false;
+      for (const auto& sphere : s.spheres) {
+        const glm::vec3 oc = eye - sphere.center;
+        const float b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - sphere.radius * sphere.radius);
+        if (std::abs(disc) < 0.02f * sphere.radius * sphere.radius) {
+          hit.reset();
+          onWater = false;
+          break;
+        }
+        const float ts = -b - std::sqrt(std::max(disc, 0.0f));
+        if (disc > 0.0f && ts > 0.0f && (!hit || ts < glm::length(*hit - eye))) {
+          hit = eye + ts * d;
+          onWater = false;
+          onSphere = true;
+          const glm::vec3 expectedNormal = glm::normalize(*hit - sphere.center);
+          const glm::vec3 gotNormal(frame.normal[k], frame.normal[k + 1], frame.normal[k + 2]);
+          ASSERT_LT(glm::length(gotNormal - expectedNormal), 0.05f) << x << "," << y;  // a tessellated sphere
+        }
+      }
+      if (!hit && std::isinf(z)) {
+        if (d.y > 0.01f) ++sky;
+        continue;
+      }
       if (!hit) {
-        if (d.y > 0.01f) {  // clearly sky
+        if (d.y > 0.01f && !onSphere) {  // clearly sky
           EXPECT_TRUE(std::isinf(z) && std::isinf(p.x)) << x << "," << y;
           EXPECT_EQ(n, glm::vec3(0.0f)) << x << "," << y;
           ++sky;
@@ -313,15 +339,20 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
       }
       const float distance = glm::length(*hit - eye);
       if (distance > 30.0f) continue;  // far grazing pixels: one pixel spans metres
-      ASSERT_LT(glm::length(p - *hit), 1e-3f * (1.0f + distance)) << x << "," << y;
-      ASSERT_LT(glm::length(n - glm::vec3(0.0f, 1.0f, 0.0f)), 1e-5f) << x << "," << y;
-      ASSERT_NEAR(z, -(u.view * glm::vec4(*hit, 1.0f)).z, 1e-3f * (1.0f + distance)) << x << "," << y;
-      (onWater ? water : ground)++;
+      // A tessellated sphere is within (1 - cos(pi/64)) of the true one: 0.1% of its radius.
+      const float tolerance = onSphere ? 2e-3f * (1.0f + distance) : 1e-3f * (1.0f + distance);
+      ASSERT_LT(glm::length(p - *hit), tolerance) << x << "," << y;
+      if (!onSphere) {
+        ASSERT_LT(glm::length(n - glm::vec3(0.0f, 1.0f, 0.0f)), 1e-5f) << x << "," << y;
+      }
+      ASSERT_NEAR(z, -(u.view * glm::vec4(*hit, 1.0f)).z, tolerance) << x << "," << y;
+      (onSphere ? spherePixels : onWater ? water : ground)++;
     }
   }
   EXPECT_GT(water, 2000);
   EXPECT_GT(ground, 2000);
   EXPECT_GT(sky, 500);
+  EXPECT_GT(spherePixels, 200);
 
   // A frame that does not ask for them does not pay for them.
   const auto plain = renderer.render({.frame = 3, .hdr = true});

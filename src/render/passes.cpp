@@ -49,6 +49,38 @@ gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentS
 
 }  // namespace
 
+static void drawSpheres(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& pipeline,
+                 const gpu::Buffer& frameUniforms, const std::vector<shader::SphereParams>& spheres) {
+  if (spheres.empty()) return;
+  cmd.bindPipeline(pipeline.bindPoint, *pipeline.pipeline);
+  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, pipeline, arena);
+  for (const auto& sphere : spheres) {
+    gpu::bindPipeline(cmd, pipeline, sphere);
+    cmd.draw(sphere.tessellation.x * sphere.tessellation.y * 6, 1, 0, 0);
+  }
+}
+
+SpherePass::SpherePass(const gpu::Context& ctx)
+    : pipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))) {}
+
+void SpherePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+                         const gpu::Image& depth, const gpu::Buffer& frameUniforms,
+                         std::vector<shader::SphereParams> spheres) const {
+  graph.pass("spheres", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
+             [this, &color, &depth, &frameUniforms, spheres](PassContext& pc) {
+               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+               pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                                       .layerCount = 1,
+                                                       .colorAttachmentCount = 1,
+                                                       .pColorAttachments = &colorTarget,
+                                                       .pDepthAttachment = &depthTarget});
+               setViewport(pc.cmd, color.extent);
+               drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, spheres);
+               pc.cmd.endRendering();
+             });
+}
+
 PoolPass::PoolPass(const gpu::Context& ctx)
     : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0))),
       floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
@@ -171,6 +203,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
         .sampledImage(1, sky, sampler)
         .storageBuffer(2, water.state())
         .uniformBuffer(3, *pool.uniforms)
+        .uniformBuffer(4, *pool.objects)
         .bind(cmd, pipeline, pc.descriptors);
     setViewport(cmd, color.extent);
     drawWater(cmd, water);
@@ -191,7 +224,8 @@ gpu::GraphicsPipelineDesc aovPipeline(const char* vertexShader, uint32_t pushSiz
 }  // namespace
 
 AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
-    : groundPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("ground.vert", sizeof(shader::GroundParams)))) {
+    : groundPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("ground.vert", sizeof(shader::GroundParams)))),
+      spherePipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("sphere.vert", sizeof(shader::SphereParams)))) {
   if (withPoolAndWater) {
     wallsPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", 0));
     floorPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_floor.vert", sizeof(glm::uvec4)));
@@ -202,7 +236,7 @@ AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
 void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                       const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                       const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-                      const WaterDraw* water) const {
+                      const WaterDraw* water, std::vector<shader::SphereParams> spheres) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {normalRef, Use::ColorWrite}, {positionRef, Use::ColorWrite}, {depthRef, Use::DepthWrite}};
   if (water) {
@@ -213,7 +247,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
   std::optional<PoolDraw> poolDraw;
   if (pool) poolDraw = *pool;
   graph.pass("aov", std::move(uses),
-             [this, &normal, &position, &depth, &frameUniforms, ground, poolDraw, waterDraw](PassContext& pc) {
+             [this, &normal, &position, &depth, &frameUniforms, ground, poolDraw, waterDraw, spheres](PassContext& pc) {
                const auto& cmd = pc.cmd;
                // Where nothing is hit: no normal, and a position and depth at infinity.
                const float inf = std::numeric_limits<float>::infinity();
@@ -235,6 +269,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
                cmd.draw(kGroundVertices, 1, 0, 0);
                if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw);
+               drawSpheres(cmd, pc.descriptors, spherePipeline, frameUniforms, spheres);
                if (waterDraw) {
                  gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
                  gpu::DescriptorWrites()

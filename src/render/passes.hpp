@@ -9,6 +9,7 @@
 #include "gpu/pipeline.hpp"
 #include "render/frame_graph.hpp"
 #include "shared/ground.h"
+#include "shared/objects.h"
 #include "shared/sky.h"
 #include "shared/tonemap.h"
 #include "shared/water_surface.h"
@@ -47,6 +48,7 @@ struct GroundPass {
 // What a pass needs to draw the pool: its uniform buffer and the floor grid's indices.
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
+  const gpu::Buffer* objects = nullptr;  // the spheres the refracted rays can meet
   const gpu::Buffer* floorIndices = nullptr;
   uint32_t floorIndexCount = 0;
   uint32_t floorGrid = 0;  // vertices per side
@@ -58,6 +60,15 @@ struct PoolPass {
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const;
   gpu::Pipeline walls, floor;
+};
+
+// Graphics: the scene's spheres, one draw each.
+struct SpherePass {
+  explicit SpherePass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+               const gpu::Image& depth, const gpu::Buffer& frameUniforms,
+               std::vector<shader::SphereParams> spheres) const;
+  gpu::Pipeline pipeline;
 };
 
 // What a pass needs to draw the water grid: the state buffers (read in the
@@ -88,8 +99,8 @@ struct AovPass {
   void declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-               const WaterDraw* water) const;
-  gpu::Pipeline groundPipeline;
+               const WaterDraw* water, std::vector<shader::SphereParams> spheres) const;
+  gpu::Pipeline groundPipeline, spherePipeline;
   std::optional<gpu::Pipeline> wallsPipeline, floorPipeline, waterPipeline;
 };
 

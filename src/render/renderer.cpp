@@ -8,6 +8,7 @@
 #include "render/frame_uniforms.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
+#include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 #include "render/water_model.hpp"
 #include "gpu/transfer.hpp"
@@ -77,9 +78,19 @@ struct Renderer::Resources {
                                        vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
                                        gpu::MemoryUse::Device, "pool floor indices");
       gpu::uploadToBuffer(ctx, floorIndices, floorGridIndices.data(), floorGridIndices.size() * sizeof(uint32_t));
-      poolDraw = PoolDraw{&poolUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid};
+      const shader::SceneObjects objects = sceneObjects(scene);
+      objectUniforms = gpu::createBuffer(ctx, sizeof(objects), vk::BufferUsageFlagBits::eUniformBuffer,
+                                         gpu::MemoryUse::Upload, "scene objects");
+      gpu::uploadToBuffer(ctx, objectUniforms, &objects, sizeof(objects));
+      poolDraw = PoolDraw{&poolUniforms, &objectUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid};
       poolPass.emplace(ctx);
       poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
+    }
+    std::vector<shader::SphereParams> spheres;
+    for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
+    if (!spheres.empty()) {
+      spherePass.emplace(ctx);
+      spherePass->declare(graph, colorRef, color, depthRef, depth, uniforms, spheres);
     }
     std::optional<WaterDraw> waterDraw;
     if (water) {
@@ -110,7 +121,8 @@ struct Renderer::Resources {
       positionReadbackRef = graph.buffer("position readback", positionReadback);
       aovPass.emplace(ctx, poolDraw.has_value());
       aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
-                       aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr);
+                       aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr,
+                       spheres);
       declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
       declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
@@ -133,7 +145,8 @@ struct Renderer::Resources {
   std::optional<WaterSurfacePass> waterPass;
   // The pool, when there is water to hold.
   std::optional<PoolPass> poolPass;
-  gpu::Buffer poolUniforms, floorIndices;
+  gpu::Buffer poolUniforms, objectUniforms, floorIndices;
+  std::optional<SpherePass> spherePass;
   // Arbitrary output variables, when the renderer was made with them.
   std::optional<AovPass> aovPass;
   gpu::Image aovNormal, aovPosition, aovDepth;

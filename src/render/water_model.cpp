@@ -1,5 +1,6 @@
 #include "render/water_model.hpp"
 
+#include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 
 namespace tp::render {
@@ -98,6 +99,7 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     }
     meshes.push_back(std::move(floor));
   }
+  for (size_t i = 0; i < scene.spheres.size(); ++i) meshes.push_back(sphereMesh(scene.spheres[i], "sphere" + std::to_string(i)));
   if (water) {
     const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
     const auto cells = sim::toCells(*water, scene.water.extent);

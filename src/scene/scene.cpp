@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include "shared/objects.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -75,6 +77,14 @@ void validateScene(const Scene& s) {
   if (w.enabled && w.level >= s.ground.height) {
     throw std::runtime_error("water.level " + std::to_string(w.level) + " must be below the pool's rim, the ground at " +
                              std::to_string(s.ground.height));
+  }
+  if (s.spheres.size() > TP_MAX_SPHERES) {
+    throw std::runtime_error("spheres: at most " + std::to_string(TP_MAX_SPHERES) + ", got " + std::to_string(s.spheres.size()));
+  }
+  for (const Sphere& sphere : s.spheres) {
+    requireFinite(sphere.center, "spheres[].center");
+    requireRange(sphere.radius, 1e-4f, 1e3f, "spheres[].radius");
+    requireNonNegative(sphere.albedo, "spheres[].albedo");
   }
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");

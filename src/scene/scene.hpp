@@ -56,6 +56,13 @@ struct Terrain {
   bool operator==(const Terrain&) const = default;
 };
 
+struct Sphere {
+  glm::vec3 center{0.0f};
+  float radius = 0.5f;
+  glm::vec3 albedo{0.8f, 0.3f, 0.2f};
+  bool operator==(const Sphere&) const = default;
+};
+
 struct Drop {
   float x = 0.0f, z = 0.0f;  // world position of the centre
   float radius = 0.3f;
@@ -93,6 +100,7 @@ struct Scene {
   Water water;
   Pool pool;
   Terrain terrain;
+  std::vector<Sphere> spheres{{{0.9f, -0.25f, -0.7f}, 0.45f, {0.80f, 0.32f, 0.20f}}};
   Render render;
   bool operator==(const Scene&) const = default;
 };

@@ -183,6 +183,11 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("persistence", s.terrain.persistence);
     r.count("seed", s.terrain.seed);
   });
+  top.objects("spheres", s.spheres, [](ObjectReader& r, scene::Sphere& sphere) {
+    r.vec3("center", sphere.center);
+    r.number("radius", sphere.radius);
+    r.vec3("albedo", sphere.albedo);
+  });
   top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
   top.finish();
   try {

@@ -1,0 +1,19 @@
+#pragma once
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+#include "shared/objects.h"
+
+namespace tp::render {
+
+// Tessellation of every sphere, in the shader and in exported meshes alike.
+inline constexpr uint32_t kSphereStacks = 32;
+inline constexpr uint32_t kSphereSlices = 64;
+inline constexpr uint32_t kSphereVertices = kSphereStacks * kSphereSlices * 6;
+
+// The one place where the scene's objects become shader parameters.
+shader::SceneObjects sceneObjects(const scene::Scene& scene);
+shader::SphereParams sphereParams(const scene::Sphere& sphere);
+// The sphere as sphere.vert tessellates it.
+scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name);
+
+}  // namespace tp::render
