@@ -68,7 +68,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--width", o.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
   cmd->add_option("--height", o.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
-  cmd->add_option("--frame", o.frame, "Frame number (the scene has no animation yet: every frame is the same)")
+  cmd->add_option("--frame", o.frame, "Frame number: the water after N frames of water.frame_time from the scene's start")
       ->capture_default_str();
   cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file)")->type_name("PATH")->capture_default_str();
   cmd->add_option("--png", o.png, "Also write a tonemapped sRGB PNG preview here")->type_name("PATH");
