@@ -361,3 +361,73 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
 }
 
 }  // namespace tp::test
+
+namespace tp::test {
+namespace {
+
+// Distance to the sphere along a unit ray, or -1; `margin` reports how close
+// the ray passes to the silhouette (relative to r^2), for leaving those out.
+float rayToSphere(glm::vec3 o, glm::vec3 d, const scene::Sphere& s, float& margin) {
+  const glm::vec3 oc = o - s.center;
+  const float b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - s.radius * s.radius);
+  margin = std::abs(disc) / (s.radius * s.radius);
+  if (disc < 0.0f) return -1.0f;
+  const float t = -b - std::sqrt(disc);
+  return t > 0.0f ? t : -1.0f;
+}
+
+}  // namespace
+
+// The water reflects the sphere where, and only where, the reflected ray meets
+// it: the frame with the sphere and the frame without differ exactly at the
+// pixels where a CPU ray cast says the reflected ray hits it (leaving out
+// pixels that see the sphere directly or through the water).
+TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
+  scene::Scene with = scene::defaultScene();
+  with.water.drops.clear();
+  // A sphere hovering over the water, seen from low over the pool: its
+  // reflection is clear of its direct image and of anything refracted.
+  with.spheres = {{{0.9f, 0.4f, -0.7f}, 0.45f, {0.8f, 0.32f, 0.2f}}};
+  with.camera.position = {-1.6f, 0.15f, -0.6f};
+  with.camera.target = {0.9f, 0.0f, -0.7f};
+  with.camera.fovYDegrees = 50.0f;
+  scene::Scene without = with;
+  without.spheres.clear();
+  render::Renderer a(ctx(), with, kWidth, kHeight), b(ctx(), without, kWidth, kHeight);
+  const auto fa = a.render({.hdr = true}), fb = b.render({.hdr = true});
+  const auto u = render::frameUniforms(with, kWidth, kHeight);
+  const glm::vec3 eye(u.cameraPosition);
+  const scene::Sphere& sphere = with.spheres.front();
+  const float half = 0.5f * with.water.extent;
+  int reflecting = 0, notReflecting = 0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      const glm::vec3 d = pixelRay(u, x, y);
+      if (d.y >= 0.0f) continue;
+      const glm::vec3 g = eye + ((with.ground.height - eye.y) / d.y) * d;
+      const glm::vec3 p = eye + ((with.water.level - eye.y) / d.y) * d;
+      if (std::max(std::abs(g.x), std::abs(g.z)) > half - 0.05f || std::max(std::abs(p.x), std::abs(p.z)) > half - 0.05f) {
+        continue;  // not through the hole onto the water
+      }
+      float m1 = 0, m2 = 0, m3 = 0;
+      const float direct = rayToSphere(eye, d, sphere, m1);
+      const glm::vec3 n(0.0f, 1.0f, 0.0f);
+      const glm::vec3 t = refractGlsl(d, n, 1.0f / with.water.ior);
+      const float refracted = rayToSphere(p, glm::normalize(t), sphere, m2);
+      const float reflected = rayToSphere(p, glm::reflect(d, n), sphere, m3);
+      if (direct > 0.0f || refracted > 0.0f || std::min({m1, m2, m3}) < 0.05f) continue;
+      const glm::vec3 ca = pixel(fa, x, y), cb = pixel(fb, x, y);
+      if (reflected > 0.0f) {
+        EXPECT_GT(glm::length(ca - cb), 1e-3f * glm::length(cb)) << x << "," << y;
+        ++reflecting;
+      } else {
+        EXPECT_LE(glm::length(ca - cb), 1e-6f * glm::length(cb)) << x << "," << y;
+        ++notReflecting;
+      }
+    }
+  }
+  EXPECT_GT(reflecting, 200);
+  EXPECT_GT(notReflecting, 2000);
+}
+
+}  // namespace tp::test
