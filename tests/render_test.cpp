@@ -431,3 +431,66 @@ TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
 }
 
 }  // namespace tp::test
+
+#include "io/image_io.hpp"
+#include "process.hpp"
+
+namespace tp::test {
+
+using SkyImageTest = GpuTest;
+
+// A sky image of constant radiance L lights an up-facing Lambertian surface
+// with E = pi L, so the ground shows albedo * L; the sky shows L; and with a
+// sky image the procedural sky pass is never recorded.
+TEST_F(SkyImageTest, ConstantSkyImageLightsTheGroundExactly) {
+  ScratchDir dir;
+  const glm::vec3 radiance(0.3f, 0.45f, 0.6f);
+  io::FloatImage sky{256, 128, {"R", "G", "B"}, {}};
+  for (int k = 0; k < 256 * 128; ++k) sky.pixels.insert(sky.pixels.end(), {radiance.r, radiance.g, radiance.b});
+  io::writeExr(dir.file("sky.exr"), sky, std::vector<io::PixelType>(3, io::PixelType::Float));
+
+  scene::Scene s = scene::defaultScene();
+  s.water.enabled = false;
+  s.spheres.clear();
+  s.ground.albedoA = s.ground.albedoB = glm::vec3(0.5f, 0.4f, 0.3f);  // no checker edges to avoid
+  s.sky.image = dir.file("sky.exr");
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  const auto frame = renderer.render({.hdr = true});
+  for (const auto& pass : frame.passes) EXPECT_NE(pass.name, "sky");
+
+  const auto u = render::frameUniforms(s, kWidth, kHeight);  // camera only: the light here is the image's
+  int ground = 0, skyPixels = 0;
+  for (uint32_t y = 0; y < kHeight; ++y) {
+    for (uint32_t x = 0; x < kWidth; ++x) {
+      const glm::vec3 d = pixelRay(u, x, y);
+      const glm::vec3 got = pixel(frame, x, y);
+      if (d.y < -0.05f) {
+        // The midpoint rule over 128 rows integrates cos(theta) sin(theta) to 5e-5.
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], s.ground.albedoA[c] * radiance[c], 2e-4f) << x << "," << y;
+        ++ground;
+      } else if (d.y > 0.05f) {
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], radiance[c], 1e-3f * radiance[c]) << x << "," << y;  // half texels
+        ++skyPixels;
+      }
+    }
+  }
+  EXPECT_GT(ground, 10000);
+  EXPECT_GT(skyPixels, 1000);
+}
+
+TEST(SkyImageCli, MissingOrUnfitSkyImagesFailCleanly) {
+  ScratchDir dir;
+  io::FloatImage gray{8, 4, {"Y"}, std::vector<float>(32, 0.5f)};
+  io::writeExr(dir.file("gray.exr"), gray, {io::PixelType::Float});
+  writeText(dir.file("missing.json"), "{\"sky\": {\"image\": \"nowhere.exr\"}}");
+  writeText(dir.file("gray.json"), "{\"sky\": {\"image\": \"gray.exr\"}}");
+  const std::vector<std::string> files{"gray.exr", "missing.json", "gray.json"};
+  EXPECT_NE(expectCleanFailure("render --scene " + dir.file("missing.json") + " --out " + dir.file("x.exr"), dir, files)
+                .find("nowhere.exr"),
+            std::string::npos);
+  EXPECT_NE(expectCleanFailure("render --scene " + dir.file("gray.json") + " --out " + dir.file("x.exr"), dir, files)
+                .find("R, G and B"),
+            std::string::npos);
+}
+
+}  // namespace tp::test

@@ -44,11 +44,12 @@ constexpr vk::AccessFlags2 kWriteAccess = A::eShaderStorageWrite | A::eColorAtta
 
 }  // namespace
 
-ResourceRef FrameGraph::image(std::string name, const gpu::Image& image) {
+ResourceRef FrameGraph::image(std::string name, const gpu::Image& image, vk::ImageLayout layout) {
   Resource r;
   r.name = std::move(name);
   r.image = image.handle();
   r.aspect = image.aspect;
+  r.layout = layout;
   resources_.push_back(std::move(r));
   return {uint32_t(resources_.size() - 1)};
 }

@@ -48,7 +48,9 @@ struct RecordedPass {
 // one record() to the next, so a graph declared once can record every frame.
 class FrameGraph {
  public:
-  ResourceRef image(std::string name, const gpu::Image& image);
+  // `layout`: the layout the image is in when the first recorded frame begins
+  // (an image filled before, by an upload whose own barrier made it visible).
+  ResourceRef image(std::string name, const gpu::Image& image, vk::ImageLayout layout = vk::ImageLayout::eUndefined);
   ResourceRef buffer(std::string name, const gpu::Buffer& buffer);
 
   using Recorder = std::function<void(PassContext&)>;

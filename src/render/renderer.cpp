@@ -10,6 +10,7 @@
 #include "render/sky_model.hpp"
 #include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
+#include "render/sky_image.hpp"
 #include "render/water_model.hpp"
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
@@ -27,8 +28,6 @@ struct Renderer::Resources {
                                                     .addressModeU = vk::SamplerAddressMode::eRepeat,
                                                     .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                     .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
-        sky(gpu::createImage2D(ctx, {scene.sky.textureWidth, scene.sky.textureWidth / 2}, kSkyFormat,
-                               vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled, "sky texture")),
         color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
@@ -56,7 +55,21 @@ struct Renderer::Resources {
       waterStep = render::waterStep(scene.water);
       substeps = render::waterSubsteps(scene.water);
     }
-    auto skyRef = graph.image("sky", sky);
+    // The sky: the procedural one, filled by the sky pass, or an image, uploaded
+    // once (and then no sky pass at all), which alone lights the scene.
+    ResourceRef skyRef;
+    const bool skyFromImage = !scene.sky.image.empty();
+    if (skyFromImage) {
+      const SkyImage image = loadSkyImage(scene.sky.image);
+      sky = uploadSkyImage(ctx, image);
+      light = SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), skyImageIrradianceUp(image)};
+      skyRef = graph.image("sky", sky, vk::ImageLayout::eShaderReadOnlyOptimal);
+    } else {
+      sky = gpu::createImage2D(ctx, {scene.sky.textureWidth, scene.sky.textureWidth / 2}, kSkyFormat,
+                               vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled, "sky texture");
+      light = proceduralSkyLight(scene.sky);
+      skyRef = graph.image("sky", sky);
+    }
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
     auto ldrRef = graph.image("ldr", ldr);
@@ -64,7 +77,7 @@ struct Renderer::Resources {
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
 
     const shader::GroundParams ground = groundParams(scene);
-    skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
+    if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
     std::optional<PoolDraw> poolDraw;
@@ -139,6 +152,7 @@ struct Renderer::Resources {
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
+  SkyLight light;
   // The water, when the scene has it: the stepper, the grid's index buffer,
   // and the steps the next frame takes to reach its frame number.
   std::optional<sim::GpuStepper> water;
@@ -173,7 +187,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   RenderedFrame out;
   out.width = width_;
   out.height = height_;
-  const shader::FrameUniforms uniforms = frameUniforms(scene_, width_, height_);
+  const shader::FrameUniforms uniforms = frameUniforms(scene_, res_->light, width_, height_);
   std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
   out.worldToCamera = uniforms.view;
   out.worldToNDC = uniforms.viewProjection;

@@ -45,4 +45,8 @@ glm::vec3 skyIrradianceUp(const scene::Sky& sky) {
   return glm::vec3(sum);
 }
 
+SkyLight proceduralSkyLight(const scene::Sky& sky) {
+  return SkyLight{sunDirection(sky), sunIrradiance(sky), skyIrradianceUp(sky)};
+}
+
 }  // namespace tp::render

@@ -16,4 +16,13 @@ glm::vec3 sunIrradiance(const scene::Sky& sky);
 // integrated numerically from the same skyRadiance the GPU evaluates.
 glm::vec3 skyIrradianceUp(const scene::Sky& sky);
 
+// The light the frame's surfaces are lit by: a sun (direction and irradiance
+// on a surface facing it) and the sky's irradiance on an up-facing surface.
+struct SkyLight {
+  glm::vec3 sunDirection{0.0f, 1.0f, 0.0f};
+  glm::vec3 sunIrradiance{0.0f};
+  glm::vec3 skyIrradiance{0.0f};
+};
+SkyLight proceduralSkyLight(const scene::Sky& sky);
+
 }  // namespace tp::render

@@ -22,6 +22,9 @@ struct Sky {
   float glowExponent = 32.0f;      // tightness of the glow around the sun
   float horizonBlend = 0.02f;      // width of the sky-to-ground blend (sin of elevation)
   unsigned textureWidth = 2048;    // equirectangular texture; height is half
+  // An equirectangular .exr or .hdr to use instead of the procedural sky
+  // (absolute, or relative to the scene file); it lights the scene alone.
+  std::string image;
   bool operator==(const Sky&) const = default;
 };
 

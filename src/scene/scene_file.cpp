@@ -142,6 +142,7 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("glow_exponent", s.sky.glowExponent);
     r.number("horizon_blend", s.sky.horizonBlend);
     r.count("texture_width", s.sky.textureWidth);
+    r.text("image", s.sky.image);
   });
   top.object("ground", [&](ObjectReader& r) {
     r.number("half_extent", s.ground.halfExtent);
@@ -190,6 +191,9 @@ Scene parseScene(const std::string& text, const std::string& origin) {
   });
   top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
   top.finish();
+  if (!s.sky.image.empty() && std::filesystem::path(s.sky.image).is_relative()) {
+    s.sky.image = (std::filesystem::path(origin).parent_path() / s.sky.image).string();
+  }
   try {
     validateScene(s);
   } catch (const std::exception& e) {

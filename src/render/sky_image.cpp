@@ -1,0 +1,73 @@
+#include "render/sky_image.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/packing.hpp>
+#include <stdexcept>
+
+#include "gpu/barriers.hpp"
+#include "gpu/submit.hpp"
+#include "io/image_io.hpp"
+
+namespace tp::render {
+
+SkyImage loadSkyImage(const std::string& path) {
+  io::FloatImage image = io::readImage(path);
+  const size_t channels = image.channels.size();
+  if (channels < 3) throw std::runtime_error("sky image " + path + " needs R, G and B channels");
+  SkyImage sky{image.width, image.height, std::vector<glm::vec4>(size_t(image.width) * image.height)};
+  for (size_t k = 0; k < sky.texels.size(); ++k) {
+    const float* p = &image.pixels[k * channels];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      throw std::runtime_error("sky image " + path + ": non-finite texel at " + std::to_string(k % sky.width) + "," +
+                               std::to_string(k / sky.width));
+    }
+    sky.texels[k] = glm::vec4(p[0], p[1], p[2], 1.0f);
+  }
+  return sky;
+}
+
+glm::vec3 skyImageIrradianceUp(const SkyImage& image) {
+  glm::dvec3 sum(0.0);
+  const double dPhi = glm::two_pi<double>() / image.width, dTheta = glm::pi<double>() / image.height;
+  for (uint32_t j = 0; j < image.height; ++j) {
+    const double theta = (j + 0.5) * dTheta;  // v = theta / pi, as lib/equirect.glsl
+    const double cosUp = std::cos(theta);
+    if (cosUp <= 0.0) continue;
+    const double weight = cosUp * std::sin(theta) * dTheta * dPhi;
+    for (uint32_t i = 0; i < image.width; ++i) sum += glm::dvec3(glm::vec3(image.texels[size_t(j) * image.width + i])) * weight;
+  }
+  return glm::vec3(sum);
+}
+
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image) {
+  // Half floats: linear filtering of them is required of every device.
+  std::vector<uint16_t> halves(image.texels.size() * 4);
+  for (size_t k = 0; k < image.texels.size(); ++k) {
+    for (int c = 0; c < 4; ++c) halves[4 * k + c] = glm::packHalf1x16(std::min(image.texels[k][c], 65504.0f));
+  }
+  gpu::Image texture = gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat,
+                                          vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                          "sky image texture");
+  gpu::Buffer staging = gpu::createBuffer(ctx, halves.size() * sizeof(uint16_t), vk::BufferUsageFlagBits::eTransferSrc,
+                                          gpu::MemoryUse::Upload, "sky image staging");
+  std::memcpy(staging.mapped, halves.data(), halves.size() * sizeof(uint16_t));
+  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
+    auto toTransfer = gpu::imageBarrier(texture.handle(), texture.aspect, gpu::access::none, vk::ImageLayout::eUndefined,
+                                        gpu::access::transferWrite, vk::ImageLayout::eTransferDstOptimal);
+    gpu::pipelineBarrier(cmd, {}, std::span(&toTransfer, 1));
+    cmd.copyBufferToImage(staging.handle(), texture.handle(), vk::ImageLayout::eTransferDstOptimal,
+                          vk::BufferImageCopy{.imageSubresource = {texture.aspect, 0, 0, 1},
+                                              .imageExtent = {image.width, image.height, 1}});
+    // Later submissions come later in submission order: this covers their reads.
+    auto toShader = gpu::imageBarrier(texture.handle(), texture.aspect, gpu::access::transferWrite,
+                                      vk::ImageLayout::eTransferDstOptimal,
+                                      {vk::PipelineStageFlagBits2::eFragmentShader, vk::AccessFlagBits2::eShaderSampledRead},
+                                      vk::ImageLayout::eShaderReadOnlyOptimal);
+    gpu::pipelineBarrier(cmd, {}, std::span(&toShader, 1));
+  }, "sky image upload");
+  return texture;
+}
+
+}  // namespace tp::render

@@ -1,0 +1,26 @@
+#pragma once
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "gpu/memory.hpp"
+
+namespace tp::render {
+
+// An equirectangular environment read from .exr or .hdr (RGB, linear).
+struct SkyImage {
+  uint32_t width = 0, height = 0;
+  std::vector<glm::vec4> texels;  // rows top (zenith) to bottom
+};
+
+// Throws one line naming the file: unreadable, fewer than 3 channels, or non-finite texels.
+SkyImage loadSkyImage(const std::string& path);
+
+// Irradiance on an up-facing surface: the image integrated over the upper
+// hemisphere, cosine weighted, each texel's solid angle (2 pi / W)(pi / H) sin(theta).
+glm::vec3 skyImageIrradianceUp(const SkyImage& image);
+
+// A half-float sampled texture holding the image, left in the shader-read layout.
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image);
+
+}  // namespace tp::render
