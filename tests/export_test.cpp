@@ -90,7 +90,7 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
 TEST(ExportCli, PlyHasAConsistentHeader) {
   ScratchDir dir;
   const std::string ply = dir.file("scene.ply");
-  ASSERT_EQ(runTidepool("export --out " + ply, dir).exitCode, 0);
+  ASSERT_EQ(runTidepool("export --validate --out " + ply, dir).exitCode, 0);
   std::ifstream in(ply);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   const uint32_t n = scene::defaultScene().water.grid, f = render::kPoolFloorGrid;

@@ -62,8 +62,8 @@ TEST(SimCli, BadInitialStatesFailCleanly) {
   ScratchDir dir;
   const std::string out = " --out " + dir.file("x.exr");
   // An RGBA render (no u, v channels), a u/v state of another size, a truncated EXR, text named .exr.
-  ASSERT_EQ(runTidepool("render --width 16 --height 16 --out " + dir.file("rgba.exr"), dir).exitCode, 0);
-  ASSERT_EQ(runTidepool("sim --grid 32 --steps 1 --out " + dir.file("small.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool("render --validate --width 16 --height 16 --out " + dir.file("rgba.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool("sim --validate --grid 32 --steps 1 --out " + dir.file("small.exr"), dir).exitCode, 0);
   {
     std::ifstream in(dir.file("small.exr"), std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), {});
