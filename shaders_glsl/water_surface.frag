@@ -1,62 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The water surface seen from above: the sky, the walls above the water and
-// the spheres reflected (the reflected ray cast against them, the sky an
-// equirectangular lookup) and the pool refracted (Snell's law, the
-// refracted ray cast against the walls exactly and the terrain floor by
-// marching and bisection), mixed by Schlick's Fresnel, the refracted light
-// attenuated along its path through the water.
-#include "lib/equirect.glsl"
-#include "lib/pool_shading.glsl"
-#include "lib/sphere_shading.glsl"
-#include "shared/objects.h"
-#include "shared/water_surface.h"
-
-layout(location = 0) in vec3 worldPosition;
-layout(location = 1) in vec3 worldNormal;
-layout(location = 0) out vec4 color;
-layout(binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 1) uniform sampler2D skyTexture;
-layout(binding = 3) uniform Pool { PoolParams pool; };
-layout(binding = 4) uniform Objects { SceneObjects objects; };
-layout(push_constant) uniform Push { WaterSurfaceParams surface; };
-
-vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
-
-// What a ray reflected off the surface at p (inside the pool, below the rim)
-// sees: a sphere, the part of a wall above the water, or the sky over the rim.
-vec3 reflectedRadiance(vec3 p, vec3 r) {
-  float nearest = 1e30;
-  vec3 radiance = sky(r);
-  const float halfSize = pool.box.x, rim = pool.box.y;
-  const float sx = r.x > 0.0 ? (halfSize - p.x) / r.x : (r.x < 0.0 ? (-halfSize - p.x) / r.x : 1e30);
-  const float sz = r.z > 0.0 ? (halfSize - p.z) / r.z : (r.z < 0.0 ? (-halfSize - p.z) / r.z : 1e30);
-  const float sWall = min(sx, sz);
-  if (sWall > 0.0 && p.y + sWall * r.y <= rim) {
-    nearest = sWall;
-    radiance = poolWallRadiance(pool, frame, sx < sz ? vec3(-sign(r.x), 0.0, 0.0) : vec3(0.0, 0.0, -sign(r.z)));
-  }
-  for (uint i = 0u; i < objects.count.x; ++i) {
-    const float s = raySphere(p, r, objects.spheres[i]);
-    if (s > 0.0 && s < nearest) {
-      nearest = s;
-      radiance = sphereRadiance(frame, objects.sphereAlbedo[i].rgb, normalize(p + s * r - objects.spheres[i].xyz));
-    }
-  }
-  return radiance;
-}
+// The water surface, accurate refraction: the refracted ray is cast against
+// the pool (walls exactly, the terrain floor by marching and bisection) and
+// the spheres, and attenuated along its path through the water.
+#include "lib/water_shading.glsl"
 
 void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  vec3 n = normalize(worldNormal);
-  const float ior = surface.absorption.w;
-  const float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
-  const float cosIn = clamp(-dot(view, n), 0.0, 1.0);
-  const float fresnel = f0 + (1.0 - f0) * pow(1.0 - cosIn, 5.0);
+  const vec3 n = normalize(worldNormal);
   const vec3 reflected = reflectedRadiance(worldPosition, reflect(view, n));
-
   vec3 transmitted = vec3(0.0);
-  const vec3 t = refract(view, n, 1.0 / ior);
+  const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
   if (dot(t, t) > 0.0 && t.y < 0.0) {  // from above there is no total internal reflection
     const PoolHit hit = tracePool(pool, worldPosition, t);
     vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz))
@@ -72,5 +26,5 @@ void main() {
     }
     transmitted = radiance * exp(-surface.absorption.rgb * distance);
   }
-  color = vec4(mix(transmitted, reflected, fresnel), 1.0);
+  color = vec4(mix(transmitted, reflected, waterFresnel(view, n)), 1.0);
 }

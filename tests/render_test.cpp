@@ -494,3 +494,47 @@ TEST(SkyImageCli, MissingOrUnfitSkyImagesFailCleanly) {
 }
 
 }  // namespace tp::test
+
+namespace tp::test {
+
+// The apparent-depth mode is exact where its assumption holds (flat water over
+// a flat floor at the mean depth: the refracted ray's mean-depth point is its
+// true hit), and only an approximation where it does not (waves, terrain).
+TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
+  scene::Scene accurate = flatWaterFromAbove();
+  scene::Scene apparent = accurate;
+  apparent.render.refraction = "apparent";
+  render::Renderer ra(ctx(), accurate, kWidth, kHeight), rb(ctx(), apparent, kWidth, kHeight);
+  const auto fa = ra.render({.hdr = true}), fb = rb.render({.hdr = true});
+  const auto u = render::frameUniforms(accurate, kWidth, kHeight);
+  const float half = 0.5f * accurate.water.extent, floorY = accurate.ground.height - accurate.pool.depth;
+  int compared = 0;
+  for (uint32_t y = 1; y + 1 < kHeight; ++y) {
+    for (uint32_t x = 1; x + 1 < kWidth; ++x) {
+      const glm::vec3 d = pixelRay(u, x, y);
+      const glm::vec3 p = glm::vec3(u.cameraPosition) + ((accurate.water.level - u.cameraPosition.y) / d.y) * d;
+      const glm::vec3 t = refractGlsl(d, {0.0f, 1.0f, 0.0f}, 1.0f / accurate.water.ior);
+      const glm::vec3 hit = p + ((floorY - p.y) / t.y) * t;
+      if (std::max(std::abs(hit.x), std::abs(hit.z)) > half - 0.1f) continue;
+      const glm::vec2 q = glm::vec2(hit.x, hit.z) / accurate.pool.tileSize, f = q - glm::floor(q);
+      if (f.x < 0.2f || f.x > 0.8f || f.y < 0.2f || f.y > 0.8f) continue;  // texel quantisation at tile edges
+      const glm::vec3 a = pixel(fa, x, y), b = pixel(fb, x, y);
+      ASSERT_LT(glm::length(a - b), 1e-3f * glm::length(a)) << x << "," << y;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 3000);
+
+  // Waves and terrain break the assumption: the modes then differ.
+  scene::Scene wavy = scene::defaultScene(), wavyApparent = wavy;
+  wavyApparent.render.refraction = "apparent";
+  render::Renderer wa(ctx(), wavy, kWidth, kHeight), wb(ctx(), wavyApparent, kWidth, kHeight);
+  const auto ga = wa.render({.frame = 12, .hdr = true}), gb = wb.render({.frame = 12, .hdr = true});
+  double difference = 0.0;
+  for (size_t k = 0; k < ga.rgba.size(); ++k) difference += std::abs(ga.rgba[k] - gb.rgba[k]);
+  EXPECT_GT(difference / double(ga.rgba.size()), 1e-3);
+  EXPECT_TRUE(std::any_of(gb.passes.begin(), gb.passes.end(), [](const auto& p) { return p.name == "underwater"; }));
+  EXPECT_FALSE(std::any_of(ga.passes.begin(), ga.passes.end(), [](const auto& p) { return p.name == "underwater"; }));
+}
+
+}  // namespace tp::test

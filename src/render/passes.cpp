@@ -167,9 +167,10 @@ void GroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Ima
              });
 }
 
-WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx)
+WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth)
     : pipeline(gpu::createGraphicsPipeline(ctx, {.vertexShader = "water_surface.vert",
-                                                 .fragmentShader = "water_surface.frag",
+                                                 .fragmentShader = apparentDepth ? "water_surface_apparent.frag"
+                                                                                 : "water_surface.frag",
                                                  .pushSize = sizeof(shader::WaterSurfaceParams),
                                                  .colorFormats = {kHdrFormat},
                                                  .depthFormat = kDepthFormat,
@@ -184,11 +185,13 @@ static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water
 void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                                const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool,
                                ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler,
-                               const gpu::Buffer& frameUniforms) const {
+                               const gpu::Buffer& frameUniforms, std::optional<Underwater> underwater) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
-  graph.pass("water", std::move(uses), [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms](PassContext& pc) {
+  if (underwater) uses.push_back({underwater->ref, Use::FragmentSample});
+  graph.pass("water", std::move(uses),
+             [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
     auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
     auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
@@ -198,13 +201,14 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
                                          .pColorAttachments = &colorTarget,
                                          .pDepthAttachment = &depthTarget});
     gpu::bindPipeline(cmd, pipeline, water.params);
-    gpu::DescriptorWrites()
-        .uniformBuffer(0, frameUniforms)
+    gpu::DescriptorWrites writes;
+    writes.uniformBuffer(0, frameUniforms)
         .sampledImage(1, sky, sampler)
         .storageBuffer(2, water.state())
         .uniformBuffer(3, *pool.uniforms)
-        .uniformBuffer(4, *pool.objects)
-        .bind(cmd, pipeline, pc.descriptors);
+        .uniformBuffer(4, *pool.objects);
+    if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
+    writes.bind(cmd, pipeline, pc.descriptors);
     setViewport(cmd, color.extent);
     drawWater(cmd, water);
     cmd.endRendering();
@@ -295,6 +299,16 @@ void TonemapPass::declare(FrameGraph& graph, ResourceRef hdrRef, const gpu::Imag
                gpu::DescriptorWrites().storageImage(0, hdr).storageImage(1, ldr).bind(cmd, pipeline, pc.descriptors);
                gpu::dispatchCovering(cmd, pipeline, params.size.x, params.size.y);
              });
+}
+
+void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,
+                      ResourceRef toRef, const gpu::Image& to) {
+  graph.pass(name, {{fromRef, Use::TransferRead}, {toRef, Use::TransferWrite}}, [&from, &to](PassContext& pc) {
+    pc.cmd.copyImage(from.handle(), vk::ImageLayout::eTransferSrcOptimal, to.handle(), vk::ImageLayout::eTransferDstOptimal,
+                     vk::ImageCopy{.srcSubresource = {from.aspect, 0, 0, 1},
+                                   .dstSubresource = {to.aspect, 0, 0, 1},
+                                   .extent = {from.extent.width, from.extent.height, 1}});
+  });
 }
 
 void declareReadback(FrameGraph& graph, const std::string& name, ResourceRef imageRef, const gpu::Image& image,

@@ -83,13 +83,26 @@ struct WaterDraw {
 
 // Graphics: the simulated water surface over the ground, reflecting the sky
 // and refracting the floor.
+// The apparent-depth mode reads `underwater`, the frame's image of the pool
+// copied before the water is drawn (accurate mode: none).
+struct Underwater {
+  ResourceRef ref;
+  const gpu::Image* image = nullptr;
+  vk::Sampler sampler;
+};
+
 struct WaterSurfacePass {
-  explicit WaterSurfacePass(const gpu::Context& ctx);
+  WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool, ResourceRef skyRef,
-               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms) const;
+               const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms,
+               std::optional<Underwater> underwater) const;
   gpu::Pipeline pipeline;
 };
+
+// Transfer: the colour target copied into another image of the same size.
+void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,
+                      ResourceRef toRef, const gpu::Image& to);
 
 // Graphics: world normal, world position and view depth of the ground and the
 // water (arbitrary output variables for the EXR), into their own targets.

@@ -28,6 +28,11 @@ struct Renderer::Resources {
                                                     .addressModeU = vk::SamplerAddressMode::eRepeat,
                                                     .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                     .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+        nearestSampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
+                                                           .minFilter = vk::Filter::eNearest,
+                                                           .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                           .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                           .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
         color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
@@ -115,8 +120,17 @@ struct Renderer::Resources {
       graph.pass("simulate",
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
                  [this](PassContext& pc) { water->recordSteps(pc.cmd, pendingSteps, waterStep); });
-      waterPass.emplace(ctx);
-      waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, *poolDraw, skyRef, sky, *sampler, uniforms);
+      std::optional<Underwater> underwater;
+      if (scene.render.refraction == "apparent") {
+        underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
+                                             vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                             "underwater image");
+        underwater = Underwater{graph.image("underwater", underwaterImage), &underwaterImage, *nearestSampler};
+        declareImageCopy(graph, "underwater", colorRef, color, underwater->ref, underwaterImage);
+      }
+      waterPass.emplace(ctx, underwater.has_value());
+      waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, *poolDraw, skyRef, sky, *sampler, uniforms,
+                         underwater);
     }
     if (options.aovs) {
       const vk::Extent2D extent{w, h};
@@ -148,7 +162,7 @@ struct Renderer::Resources {
   BackgroundPass backgroundPass;
   GroundPass groundPass;
   TonemapPass tonemapPass;
-  vk::raii::Sampler sampler;
+  vk::raii::Sampler sampler, nearestSampler;
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
@@ -157,6 +171,7 @@ struct Renderer::Resources {
   // and the steps the next frame takes to reach its frame number.
   std::optional<sim::GpuStepper> water;
   std::optional<WaterSurfacePass> waterPass;
+  gpu::Image underwaterImage;  // the apparent-depth mode's copy of the pool under the water
   // The pool, when there is water to hold.
   std::optional<PoolPass> poolPass;
   gpu::Buffer poolUniforms, objectUniforms, floorIndices;

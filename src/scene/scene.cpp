@@ -54,6 +54,9 @@ void validateScene(const Scene& s) {
   requireNonNegative(s.ground.albedoA, "ground.albedo_a");
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
+  if (s.render.refraction != "accurate" && s.render.refraction != "apparent") {
+    throw std::runtime_error("render.refraction must be accurate or apparent, got '" + s.render.refraction + "'");
+  }
   const Water& w = s.water;
   requireRange(float(w.grid), 2.0f, 8192.0f, "water.grid");
   requireRange(w.extent, 1e-3f, 1e4f, "water.extent");

@@ -93,6 +93,10 @@ struct Water {
 
 struct Render {
   float exposure = 0.8f;
+  // How the water shows what is under it: "accurate" casts each refracted ray
+  // against the pool and spheres; "apparent" is the original's approximation,
+  // reading the frame's own image of the pool at the refracted ray's mean-depth point.
+  std::string refraction = "accurate";
   bool operator==(const Render&) const = default;
 };
 

@@ -189,7 +189,10 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("radius", sphere.radius);
     r.vec3("albedo", sphere.albedo);
   });
-  top.object("render", [&](ObjectReader& r) { r.number("exposure", s.render.exposure); });
+  top.object("render", [&](ObjectReader& r) {
+    r.number("exposure", s.render.exposure);
+    r.text("refraction", s.render.refraction);
+  });
   top.finish();
   if (!s.sky.image.empty() && std::filesystem::path(s.sky.image).is_relative()) {
     s.sky.image = (std::filesystem::path(origin).parent_path() / s.sky.image).string();
