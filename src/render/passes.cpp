@@ -23,6 +23,22 @@ vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout 
                                      .clearValue = clear};
 }
 
+// Draws over what the colour and depth targets already hold (both loaded and
+// stored): the framing of every pass after the ground.
+void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
+              const std::function<void()>& draw) {
+  auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+  auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                       .layerCount = 1,
+                                       .colorAttachmentCount = 1,
+                                       .pColorAttachments = &colorTarget,
+                                       .pDepthAttachment = &depthTarget});
+  setViewport(cmd, color.extent);
+  draw();
+  cmd.endRendering();
+}
+
 constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the pool's hole
 constexpr uint32_t kWallVertices = 24;    // pool_walls.vert: four quads
 
@@ -68,16 +84,8 @@ void SpherePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Ima
                          std::vector<shader::SphereParams> spheres) const {
   graph.pass("spheres", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
              [this, &color, &depth, &frameUniforms, spheres](PassContext& pc) {
-               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
-                                                       .layerCount = 1,
-                                                       .colorAttachmentCount = 1,
-                                                       .pColorAttachments = &colorTarget,
-                                                       .pDepthAttachment = &depthTarget});
-               setViewport(pc.cmd, color.extent);
-               drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, spheres);
-               pc.cmd.endRendering();
+               drawOver(pc.cmd, color, depth,
+                        [&] { drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, spheres); });
              });
 }
 
@@ -89,16 +97,7 @@ void PoolPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image
                        const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const {
   graph.pass("pool", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
              [this, &color, &depth, &frameUniforms, pool](PassContext& pc) {
-               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
-                                                       .layerCount = 1,
-                                                       .colorAttachmentCount = 1,
-                                                       .pColorAttachments = &colorTarget,
-                                                       .pDepthAttachment = &depthTarget});
-               setViewport(pc.cmd, color.extent);
-               drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool);
-               pc.cmd.endRendering();
+               drawOver(pc.cmd, color, depth, [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool); });
              });
 }
 
@@ -193,25 +192,18 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
   graph.pass("water", std::move(uses),
              [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
-    auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-    auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-    cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
-                                         .layerCount = 1,
-                                         .colorAttachmentCount = 1,
-                                         .pColorAttachments = &colorTarget,
-                                         .pDepthAttachment = &depthTarget});
-    gpu::bindPipeline(cmd, pipeline, water.params);
-    gpu::DescriptorWrites writes;
-    writes.uniformBuffer(0, frameUniforms)
-        .sampledImage(1, sky, sampler)
-        .storageBuffer(2, water.state())
-        .uniformBuffer(3, *pool.uniforms)
-        .uniformBuffer(4, *pool.objects);
-    if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
-    writes.bind(cmd, pipeline, pc.descriptors);
-    setViewport(cmd, color.extent);
-    drawWater(cmd, water);
-    cmd.endRendering();
+    drawOver(cmd, color, depth, [&] {
+      gpu::bindPipeline(cmd, pipeline, water.params);
+      gpu::DescriptorWrites writes;
+      writes.uniformBuffer(0, frameUniforms)
+          .sampledImage(1, sky, sampler)
+          .storageBuffer(2, water.state())
+          .uniformBuffer(3, *pool.uniforms)
+          .uniformBuffer(4, *pool.objects);
+      if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
+      writes.bind(cmd, pipeline, pc.descriptors);
+      drawWater(cmd, water);
+    });
   });
 }
 
