@@ -6,6 +6,7 @@
 
 #include "process.hpp"
 #include "render/objects_model.hpp"
+#include "scene/scene_file.hpp"
 #include "render/pool_model.hpp"
 #include "render/water_model.hpp"
 #include "sim/reference_sim.hpp"
@@ -115,6 +116,57 @@ TEST(ExportCli, BadOutputsFailCleanly) {
   EXPECT_NE(expectCleanFailure("export --scene " + dir.file("broken.json") + " --out " + dir.file("x.obj"), dir, files)
                 .find("water.grid"),
             std::string::npos);
+}
+
+}  // namespace tp::test
+
+namespace tp::test {
+
+// A sphere moving down into calm water along its path pushes out exactly the
+// volume it comes to occupy below the rest level (as the grid samples it), and
+// the export puts it where the path says at the frame's time.
+TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
+  ScratchDir dir;
+  const std::string sceneFile = dir.file("moving.json"), obj = dir.file("moving.obj");
+  writeText(sceneFile, R"({"water": {"drops": []},
+    "spheres": [{"radius": 0.45, "path": [{"time": 0.0, "center": [0.9, 0.4, -0.7]},
+                                           {"time": 0.5, "center": [0.9, -0.3, -0.7]}]}]})");
+  constexpr uint32_t kFrame = 9;
+  ProcessResult r = runTidepool("export --validate --scene " + sceneFile + " --frame " + std::to_string(kFrame) +
+                                    " --out " + obj, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const scene::Scene s = scene::loadSceneFile(sceneFile);
+  const float t = kFrame * s.water.frameTime;
+  const glm::vec3 center = scene::sphereCenterAt(s.spheres[0], t);
+  EXPECT_NEAR(center.y, 0.4f - 0.7f * t / 0.5f, 1e-6f);
+
+  const ObjContents c = readObj(obj);
+  const uint32_t n = s.water.grid;
+  const size_t floorVertices = size_t(render::kPoolFloorGrid) * render::kPoolFloorGrid;
+  const size_t sphereVertices = size_t(render::kSphereStacks + 1) * (render::kSphereSlices + 1);
+  const size_t sphereFirst = 32 + floorVertices, first = sphereFirst + sphereVertices;
+  ASSERT_EQ(c.vertices.size(), first + size_t(n) * n);
+  for (size_t k = sphereFirst; k < first; ++k) {
+    ASSERT_NEAR(glm::length(c.vertices[k] - center), s.spheres[0].radius, 1e-5f);
+  }
+
+  // Volume the sphere occupies below the rest level, column by column.
+  const double h = s.water.extent / n, half = 0.5 * s.water.extent;
+  double submerged = 0.0, waterChange = 0.0;
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      const double x = (i + 0.5) * h - half, z = (j + 0.5) * h - half;
+      const double r2 = double(s.spheres[0].radius) * s.spheres[0].radius - (x - center.x) * (x - center.x) -
+                        (z - center.z) * (z - center.z);
+      if (r2 > 0.0) {
+        const double chordHalf = std::sqrt(r2);
+        submerged += std::max(0.0, std::min(double(center.y) + chordHalf, double(s.water.level)) - (center.y - chordHalf)) * h * h;
+      }
+      waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
+    }
+  }
+  EXPECT_GT(submerged, 0.05);  // it is well in
+  EXPECT_NEAR(waterChange, -submerged, 1e-3 * submerged);
 }
 
 }  // namespace tp::test

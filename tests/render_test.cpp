@@ -538,3 +538,21 @@ TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
 }
 
 }  // namespace tp::test
+
+namespace tp::test {
+
+// A sphere on a path stirs calm water; the same sphere held still does not.
+TEST_F(WaterRenderTest, MovingSphereStirsCalmWater) {
+  scene::Scene still = scene::defaultScene();
+  still.water.drops.clear();
+  scene::Scene moving = still;
+  moving.spheres[0].path = {{0.0f, {0.9f, 0.4f, -0.7f}}, {0.4f, {0.9f, -0.3f, -0.7f}}};
+  render::Renderer a(ctx(), still, 96, 64), b(ctx(), moving, 96, 64);
+  EXPECT_EQ(a.render({.frame = 0}).rgba, a.render({.frame = 12}).rgba);
+  const auto b0 = b.render({.frame = 0}), b12 = b.render({.frame = 12});
+  EXPECT_NE(b0.rgba, b12.rgba);
+  render::Renderer again(ctx(), moving, 96, 64);
+  EXPECT_EQ(again.render({.frame = 12}).rgba, b12.rgba);  // deterministic, with the moves between steps
+}
+
+}  // namespace tp::test

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "app/gpu_session.hpp"
+#include "gpu/submit.hpp"
 #include "io/mesh_io.hpp"
 #include "render/water_model.hpp"
 #include "scene/scene_file.hpp"
@@ -35,11 +36,14 @@ int runExport(const ExportOptions& o) {
     GpuSession session(o.validate, o.device);
     sim::GpuStepper stepper(session.context(), render::waterParams(scene.water), render::waterInitialState(scene.water),
                             sim::StepKernel::OnePerDispatch);
-    stepper.step(uint64_t(o.frame) * render::waterSubsteps(scene.water), render::waterStep(scene.water));
+    const uint64_t steps = uint64_t(o.frame) * render::waterSubsteps(scene.water);
+    gpu::submitAndWait(session.context(), [&](const vk::raii::CommandBuffer& cmd) {
+      render::recordWaterSteps(cmd, stepper, scene, 0, steps);
+    }, "water simulation");
     water = stepper.download();
     exitCode = session.finish();
   }
-  const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr);
+  const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr, float(o.frame) * scene.water.frameTime);
   io::writeMeshes(o.out, meshes);
   size_t triangles = 0;
   for (const auto& m : meshes) triangles += m.indices.size() / 3;

@@ -81,11 +81,11 @@ SpherePass::SpherePass(const gpu::Context& ctx)
 
 void SpherePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                          const gpu::Image& depth, const gpu::Buffer& frameUniforms,
-                         std::vector<shader::SphereParams> spheres) const {
+                         const std::vector<shader::SphereParams>* spheres) const {
   graph.pass("spheres", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
              [this, &color, &depth, &frameUniforms, spheres](PassContext& pc) {
                drawOver(pc.cmd, color, depth,
-                        [&] { drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, spheres); });
+                        [&] { drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, *spheres); });
              });
 }
 
@@ -232,7 +232,7 @@ AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
 void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                       const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                       const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-                      const WaterDraw* water, std::vector<shader::SphereParams> spheres) const {
+                      const WaterDraw* water, const std::vector<shader::SphereParams>* spheres) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {normalRef, Use::ColorWrite}, {positionRef, Use::ColorWrite}, {depthRef, Use::DepthWrite}};
   if (water) {
@@ -265,7 +265,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
                cmd.draw(kGroundVertices, 1, 0, 0);
                if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw);
-               drawSpheres(cmd, pc.descriptors, spherePipeline, frameUniforms, spheres);
+               drawSpheres(cmd, pc.descriptors, spherePipeline, frameUniforms, *spheres);
                if (waterDraw) {
                  gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
                  gpu::DescriptorWrites()

@@ -62,12 +62,13 @@ struct PoolPass {
   gpu::Pipeline walls, floor;
 };
 
-// Graphics: the scene's spheres, one draw each.
+// Graphics: the scene's spheres, one draw each, where `spheres` says they are
+// when the frame records (they may move from frame to frame).
 struct SpherePass {
   explicit SpherePass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                const gpu::Image& depth, const gpu::Buffer& frameUniforms,
-               std::vector<shader::SphereParams> spheres) const;
+               const std::vector<shader::SphereParams>* spheres) const;
   gpu::Pipeline pipeline;
 };
 
@@ -112,7 +113,7 @@ struct AovPass {
   void declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-               const WaterDraw* water, std::vector<shader::SphereParams> spheres) const;
+               const WaterDraw* water, const std::vector<shader::SphereParams>* spheres) const;
   gpu::Pipeline groundPipeline, spherePipeline;
   std::optional<gpu::Pipeline> wallsPipeline, floorPipeline, waterPipeline;
 };

@@ -104,11 +104,10 @@ struct Renderer::Resources {
       poolPass.emplace(ctx);
       poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
     }
-    std::vector<shader::SphereParams> spheres;
     for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
     if (!spheres.empty()) {
       spherePass.emplace(ctx);
-      spherePass->declare(graph, colorRef, color, depthRef, depth, uniforms, spheres);
+      spherePass->declare(graph, colorRef, color, depthRef, depth, uniforms, &spheres);
     }
     std::optional<WaterDraw> waterDraw;
     if (water) {
@@ -119,7 +118,7 @@ struct Renderer::Resources {
                             waterSurfaceParams(scene)};
       graph.pass("simulate",
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
-                 [this](PassContext& pc) { water->recordSteps(pc.cmd, pendingSteps, waterStep); });
+                 [this, scene](PassContext& pc) { recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps); });
       std::optional<Underwater> underwater;
       if (scene.render.refraction == "apparent") {
         underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
@@ -149,7 +148,7 @@ struct Renderer::Resources {
       aovPass.emplace(ctx, poolDraw.has_value());
       aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
                        aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr,
-                       spheres);
+                       &spheres);
       declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
       declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
@@ -176,6 +175,7 @@ struct Renderer::Resources {
   std::optional<PoolPass> poolPass;
   gpu::Buffer poolUniforms, objectUniforms, floorIndices;
   std::optional<SpherePass> spherePass;
+  std::vector<shader::SphereParams> spheres;  // where the spheres are in the frame being recorded
   // Arbitrary output variables, when the renderer was made with them.
   std::optional<AovPass> aovPass;
   gpu::Image aovNormal, aovPosition, aovDepth;
@@ -216,6 +216,17 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
       res_->stepsDone = 0;
     }
     res_->pendingSteps = target - res_->stepsDone;
+  }
+  // Spheres with a path are where the path puts them at this frame's time.
+  const float time = float(request.frame) * scene_.water.frameTime;
+  for (size_t i = 0; i < scene_.spheres.size(); ++i) {
+    res_->spheres[i].sphere = glm::vec4(scene::sphereCenterAt(scene_.spheres[i], time), scene_.spheres[i].radius);
+  }
+  if (res_->objectUniforms.mapped) {
+    scene::Scene placed = scene_;
+    for (auto& sphere : placed.spheres) sphere.center = scene::sphereCenterAt(sphere, time);
+    const shader::SceneObjects objects = sceneObjects(placed);
+    std::memcpy(res_->objectUniforms.mapped, &objects, sizeof(objects));
   }
   std::vector<ResourceRef> requested;
   if (request.hdr) requested.push_back(res_->colorReadbackRef);

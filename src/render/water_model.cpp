@@ -14,6 +14,30 @@ sim::WaterParams waterParams(const scene::Water& w) {
                           .maxSlope = w.maxSlope};
 }
 
+void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water, const scene::Scene& scene,
+                      uint64_t first, uint64_t count) {
+  const double dt = waterStep(scene.water);
+  bool moving = false;
+  for (const auto& sphere : scene.spheres) moving |= !sphere.path.empty();
+  if (!moving) {
+    water.recordSteps(cmd, count, dt);
+    return;
+  }
+  for (uint64_t step = first; step < first + count; ++step) {
+    const float t0 = float(double(step) * dt), t1 = float(double(step + 1) * dt);
+    for (const auto& sphere : scene.spheres) {
+      if (sphere.path.empty()) continue;
+      water.recordSphereMove(cmd, worldToGrid(scene.water, scene::sphereCenterAt(sphere, t0)),
+                             worldToGrid(scene.water, scene::sphereCenterAt(sphere, t1)), sphere.radius, scene.water.level);
+    }
+    water.recordSteps(cmd, 1, dt);
+  }
+}
+
+glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {
+  return {p.x + 0.5f * w.extent, p.y, p.z + 0.5f * w.extent};
+}
+
 uint32_t waterSubsteps(const scene::Water& w) { return sim::substepsFor(waterParams(w), w.frameTime); }
 
 double waterStep(const scene::Water& w) { return double(w.frameTime) / waterSubsteps(w); }
@@ -66,7 +90,7 @@ void addQuad(scene::Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d)
 
 }  // namespace
 
-std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water) {
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water, float time) {
   std::vector<scene::Mesh> meshes;
   const shader::GroundParams g = groundParams(scene);
   const float e = g.plane.x, y = g.plane.y, hole = g.plane.w;
@@ -99,7 +123,11 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     }
     meshes.push_back(std::move(floor));
   }
-  for (size_t i = 0; i < scene.spheres.size(); ++i) meshes.push_back(sphereMesh(scene.spheres[i], "sphere" + std::to_string(i)));
+  for (size_t i = 0; i < scene.spheres.size(); ++i) {
+    scene::Sphere placed = scene.spheres[i];
+    placed.center = scene::sphereCenterAt(placed, time);
+    meshes.push_back(sphereMesh(placed, "sphere" + std::to_string(i)));
+  }
   if (water) {
     const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
     const auto cells = sim::toCells(*water, scene.water.extent);

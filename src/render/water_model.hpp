@@ -1,7 +1,9 @@
 #pragma once
 #include <vector>
 
+#include "gpu/vulkan.hpp"
 #include "scene/mesh.hpp"
+#include "sim/gpu_stepper.hpp"
 #include "scene/scene.hpp"
 #include "shared/ground.h"
 #include "shared/water_surface.h"
@@ -10,9 +12,17 @@
 
 namespace tp::render {
 
+// Records steps [first, first + count) of the scene's water: each step of
+// dt, preceded, for every sphere with a path, by its displacement of the water
+// from where it was at the step's start to where it is at its end.
+void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water, const scene::Scene& scene,
+                      uint64_t first, uint64_t count);
+
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
 sim::WaterParams waterParams(const scene::Water& water);
+// World position to the simulation's frame, whose grid starts at the water square's corner.
+glm::vec3 worldToGrid(const scene::Water& water, glm::vec3 p);
 // Seconds per simulation step: the frame time split into the fewest stable substeps.
 uint32_t waterSubsteps(const scene::Water& water);
 double waterStep(const scene::Water& water);
@@ -26,6 +36,6 @@ shader::GroundParams groundParams(const scene::Scene& scene);
 
 // The triangles a frame shows, in world space: the ground around the pool's
 // hole, the pool's walls and floor, and, given its state, the water surface.
-std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water);
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water, float time);
 
 }  // namespace tp::render

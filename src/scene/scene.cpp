@@ -31,6 +31,19 @@ void requireRange(float value, float lo, float hi, const char* field) {
 
 Scene defaultScene() { return Scene{}; }
 
+glm::vec3 sphereCenterAt(const Sphere& sphere, float t) {
+  const auto& path = sphere.path;
+  if (path.empty()) return sphere.center;
+  if (t <= path.front().time) return path.front().center;
+  for (size_t i = 1; i < path.size(); ++i) {
+    if (t <= path[i].time) {
+      const float f = (t - path[i - 1].time) / (path[i].time - path[i - 1].time);
+      return glm::mix(path[i - 1].center, path[i].center, f);
+    }
+  }
+  return path.back().center;
+}
+
 void validateScene(const Scene& s) {
   requireFinite(s.camera.position, "camera.position");
   requireFinite(s.camera.target, "camera.target");
@@ -88,6 +101,13 @@ void validateScene(const Scene& s) {
     requireFinite(sphere.center, "spheres[].center");
     requireRange(sphere.radius, 1e-4f, 1e3f, "spheres[].radius");
     requireNonNegative(sphere.albedo, "spheres[].albedo");
+    for (size_t k = 0; k < sphere.path.size(); ++k) {
+      requireFinite(sphere.path[k].center, "spheres[].path[].center");
+      requireRange(sphere.path[k].time, 0.0f, 1e6f, "spheres[].path[].time");
+      if (k > 0 && !(sphere.path[k].time > sphere.path[k - 1].time)) {
+        throw std::runtime_error("spheres[].path: keyframe times must increase");
+      }
+    }
   }
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");

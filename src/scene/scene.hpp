@@ -59,12 +59,24 @@ struct Terrain {
   bool operator==(const Terrain&) const = default;
 };
 
+struct Keyframe {
+  float time = 0.0f;  // seconds from the scene's start
+  glm::vec3 center{0.0f};
+  bool operator==(const Keyframe&) const = default;
+};
+
+// A sphere; with a path it moves (linearly between keyframes, held before the
+// first and after the last) and pushes the water as it goes.
 struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
   glm::vec3 albedo{0.8f, 0.3f, 0.2f};
+  std::vector<Keyframe> path = {};
   bool operator==(const Sphere&) const = default;
 };
+
+// Where the sphere's centre is at time t.
+glm::vec3 sphereCenterAt(const Sphere& sphere, float t);
 
 struct Drop {
   float x = 0.0f, z = 0.0f;  // world position of the centre

@@ -188,6 +188,10 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.vec3("center", sphere.center);
     r.number("radius", sphere.radius);
     r.vec3("albedo", sphere.albedo);
+    r.objects("path", sphere.path, [](ObjectReader& k, scene::Keyframe& key) {
+      k.number("time", key.time);
+      k.vec3("center", key.center);
+    });
   });
   top.object("render", [&](ObjectReader& r) {
     r.number("exposure", s.render.exposure);
