@@ -57,7 +57,6 @@ struct Renderer::Resources {
                                   vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
                                   gpu::MemoryUse::Device, "water grid indices");
       gpu::uploadToBuffer(ctx, indices, gridIndices.data(), gridIndices.size() * sizeof(uint32_t));
-      waterStep = render::waterStep(scene.water);
       substeps = render::waterSubsteps(scene.water);
     }
     // The sky: the procedural one, filled by the sky pass, or an image, uploaded
@@ -183,7 +182,6 @@ struct Renderer::Resources {
   ResourceRef normalReadbackRef, positionReadbackRef;
   gpu::Buffer indices;
   uint32_t indexCount = 0;
-  double waterStep = 0.0;
   uint32_t substeps = 1;
   uint64_t stepsDone = 0;
   uint64_t pendingSteps = 0;
