@@ -95,15 +95,6 @@ std::vector<bool> FrameGraph::needed(std::span<const ResourceRef> requested) con
   return keep;
 }
 
-std::vector<std::string> FrameGraph::neededPasses(std::span<const ResourceRef> requested) const {
-  std::vector<std::string> names;
-  auto keep = needed(requested);
-  for (size_t p = 0; p < passes_.size(); ++p) {
-    if (keep[p]) names.push_back(passes_[p].name);
-  }
-  return names;
-}
-
 void FrameGraph::barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarrier2>& buffers,
                              std::vector<vk::ImageMemoryBarrier2>& images) {
   for (const auto& [ref, use] : pass.uses) {

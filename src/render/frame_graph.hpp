@@ -61,9 +61,6 @@ class FrameGraph {
   std::vector<std::string> record(PassContext& context, std::span<const ResourceRef> requested,
                                   gpu::GpuTimer* timer = nullptr);
 
-  // Names of the passes that record() would keep for `requested`.
-  std::vector<std::string> neededPasses(std::span<const ResourceRef> requested) const;
-
  private:
   struct Resource {
     std::string name;

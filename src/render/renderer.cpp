@@ -236,12 +236,11 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }
 
   gpu::GpuTimer timer(ctx_, 16);
-  std::vector<std::string> names;
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it
   gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) {
     timer.reset(cmd);
     PassContext context{cmd, res_->descriptors};
-    names = res_->graph.record(context, requested, &timer);
+    res_->graph.record(context, requested, &timer);
   }, "frame rendering");
   for (const auto& scope : timer.read()) out.passes.push_back({scope.name, scope.milliseconds});
   res_->stepsDone += res_->pendingSteps;

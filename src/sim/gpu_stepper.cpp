@@ -166,10 +166,6 @@ WaterStats GpuStepper::readStats() const {
   return s;
 }
 
-void GpuStepper::submit(const std::function<void(const vk::raii::CommandBuffer&)>& record, const char* what) {
-  gpu::submitAndWait(ctx_, record, what);
-}
-
 void GpuStepper::step(uint64_t steps, double dt) {
   // Bounded command buffers: a long run is split so that no single submission
   // holds an unbounded number of dispatches.
@@ -177,22 +173,22 @@ void GpuStepper::step(uint64_t steps, double dt) {
   const uint64_t stepsPerSubmit = kernel_ == StepKernel::Tiled ? kDispatchesPerSubmit * halo_ : kDispatchesPerSubmit;
   for (uint64_t done = 0; done < steps;) {
     const uint64_t k = std::min(stepsPerSubmit, steps - done);
-    submit([&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");
+    gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");
     done += k;
   }
 }
 
 void GpuStepper::drop(glm::vec2 center, float radius, float amplitude) {
-  submit([&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
+  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
 }
 
 void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel) {
-  submit([&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
+  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
          "sphere displacement");
 }
 
 WaterStats GpuStepper::stats(double dt) {
-  submit([&](const vk::raii::CommandBuffer& cmd) { recordStats(cmd, dt); }, "water statistics");
+  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordStats(cmd, dt); }, "water statistics");
   return readStats();
 }
 

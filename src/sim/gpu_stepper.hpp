@@ -1,6 +1,5 @@
 #pragma once
 #include <glm/glm.hpp>
-#include <functional>
 #include <memory>
 
 #include "gpu/context.hpp"
@@ -53,7 +52,6 @@ class GpuStepper {
 
  private:
   void beforeCompute(const vk::raii::CommandBuffer& cmd);
-  void submit(const std::function<void(const vk::raii::CommandBuffer&)>& record, const char* what);
 
   const gpu::Context& ctx_;
   WaterParams params_;
