@@ -21,6 +21,13 @@ void uploadToBuffer(const Context& ctx, const Buffer& buffer, const void* data, 
   }, "buffer upload");
 }
 
+Buffer createFilledBuffer(const Context& ctx, const void* data, size_t bytes, vk::BufferUsageFlags usage, MemoryUse use,
+                          const std::string& what) {
+  Buffer buffer = createBuffer(ctx, bytes, usage | vk::BufferUsageFlagBits::eTransferDst, use, what);
+  uploadToBuffer(ctx, buffer, data, bytes);
+  return buffer;
+}
+
 std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Access src) {
   Buffer readback = createBuffer(ctx, buffer.size, vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback, "readback");
   submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {

@@ -11,6 +11,16 @@ namespace tp::gpu {
 // buffer and a copy, followed by a barrier that makes it visible to all later work.
 void uploadToBuffer(const Context& ctx, const Buffer& buffer, const void* data, size_t bytes);
 
+// A buffer made for `data` and filled with it (uploadToBuffer; transfer-dst usage added).
+Buffer createFilledBuffer(const Context& ctx, const void* data, size_t bytes, vk::BufferUsageFlags usage, MemoryUse use,
+                          const std::string& what);
+
+template <typename T>
+Buffer createFilledBuffer(const Context& ctx, const std::vector<T>& data, vk::BufferUsageFlags usage, MemoryUse use,
+                          const std::string& what) {
+  return createFilledBuffer(ctx, data.data(), data.size() * sizeof(T), usage, use, what);
+}
+
 // Buffer to host, through a readback buffer and a copy, with the transfer-to-host
 // barrier. `src` is where the buffer was last written (e.g. access::computeWrite).
 std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Access src);

@@ -53,10 +53,8 @@ struct Renderer::Resources {
                     sim::StepKernel::OnePerDispatch);
       const auto gridIndices = waterGridIndices(scene.water.grid);
       indexCount = uint32_t(gridIndices.size());
-      indices = gpu::createBuffer(ctx, gridIndices.size() * sizeof(uint32_t),
-                                  vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
-                                  gpu::MemoryUse::Device, "water grid indices");
-      gpu::uploadToBuffer(ctx, indices, gridIndices.data(), gridIndices.size() * sizeof(uint32_t));
+      indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
+                                        "water grid indices");
       substeps = render::waterSubsteps(scene.water);
     }
     // The sky: the procedural one, filled by the sky pass, or an image, uploaded
@@ -87,18 +85,14 @@ struct Renderer::Resources {
     std::optional<PoolDraw> poolDraw;
     if (hasPool(scene)) {
       const shader::PoolParams pool = poolParams(scene);
-      poolUniforms = gpu::createBuffer(ctx, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer, gpu::MemoryUse::Upload,
-                                       "pool uniforms");
-      gpu::uploadToBuffer(ctx, poolUniforms, &pool, sizeof(pool));
+      poolUniforms = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
+                                             gpu::MemoryUse::Upload, "pool uniforms");
       const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
-      floorIndices = gpu::createBuffer(ctx, floorGridIndices.size() * sizeof(uint32_t),
-                                       vk::BufferUsageFlagBits::eIndexBuffer | vk::BufferUsageFlagBits::eTransferDst,
-                                       gpu::MemoryUse::Device, "pool floor indices");
-      gpu::uploadToBuffer(ctx, floorIndices, floorGridIndices.data(), floorGridIndices.size() * sizeof(uint32_t));
-      const shader::SceneObjects objects = sceneObjects(scene);
-      objectUniforms = gpu::createBuffer(ctx, sizeof(objects), vk::BufferUsageFlagBits::eUniformBuffer,
+      floorIndices = gpu::createFilledBuffer(ctx, floorGridIndices, vk::BufferUsageFlagBits::eIndexBuffer,
+                                             gpu::MemoryUse::Device, "pool floor indices");
+      // Filled by render(): the spheres may move from frame to frame.
+      objectUniforms = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
                                          gpu::MemoryUse::Upload, "scene objects");
-      gpu::uploadToBuffer(ctx, objectUniforms, &objects, sizeof(objects));
       poolDraw = PoolDraw{&poolUniforms, &objectUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid};
       poolPass.emplace(ctx);
       poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
