@@ -19,10 +19,7 @@ CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
   cmd->add_option("--out", o.out, "Output .obj or .ply")->type_name("PATH")->required();
-  cmd->add_flag("--validate", o.validate,
-                "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
-  cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
-      ->type_name("NAME");
+  addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 

@@ -4,6 +4,13 @@
 
 namespace tp::app {
 
+void addGpuOptions(CLI::App* command, bool& validate, std::string& device) {
+  command->add_flag("--validate", validate,
+                    "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
+  command->add_option("--device", device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
+      ->type_name("NAME");
+}
+
 GpuSession::GpuSession(bool validate, const std::string& device)
     : context_(gpu::ContextOptions{.validation = validate, .deviceName = device}) {
   context_.validationLog().setEcho(true);

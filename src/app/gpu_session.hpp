@@ -1,9 +1,13 @@
 #pragma once
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "gpu/context.hpp"
 
 namespace tp::app {
+
+// The --validate and --device options every command that uses the GPU takes.
+void addGpuOptions(CLI::App* command, bool& validate, std::string& device);
 
 // The Vulkan context of one command, with the CLI's reporting of validation
 // messages: echoed as they come, counted at the end.

@@ -75,10 +75,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   auto* half = cmd->add_flag("--half", o.halfOutput, "Write 16-bit half EXR channels (default)");
   auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
   half->excludes(full);
-  cmd->add_flag("--validate", o.validate,
-                "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
-  cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
-      ->type_name("NAME");
+  addGpuOptions(cmd, o.validate, o.device);
   cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
   cmd->add_option("--aov", o.aovs,
                   "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "

@@ -48,10 +48,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   cmd->add_option("--health-every", o.healthEvery, "Steps between health checks (max |u|, volume, energy, NaN)")
       ->capture_default_str()
       ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
-  cmd->add_flag("--validate", o.validate,
-                "Enable the Khronos validation layer with synchronization validation; exit 3 on any message");
-  cmd->add_option("--device", o.device, "Use the Vulkan device whose name contains NAME (also $TIDEPOOL_DEVICE)")
-      ->type_name("NAME");
+  addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 
@@ -81,27 +78,19 @@ int runSim(const CLI::App& command, const SimOptions& o) {
   };
   if (params.n != 0) checkFits(params.n);
 
-  // The time step: given, or the fewest substeps of a frame within the margin.
-  auto stepSize = [&](const sim::WaterParams& p) {
-    return command.count("--dt") ? std::pair<double, uint32_t>{o.dt, 1u}
-                                 : std::pair<double, uint32_t>{o.frameTime / sim::substepsFor(p, o.frameTime),
-                                                               sim::substepsFor(p, o.frameTime)};
-  };
   sim::WaterState initial;
-  double dt = 0.0;
-  uint32_t substeps = 1;
   if (fromFile) {
-    initial = sim::initialState(o.init, params, 0.0);
+    initial = sim::initialState(o.init, params, 0.0);  // taken as it is: the step size does not enter
     params.n = initial.n;
     sim::validate(params);
     checkFits(params.n);
-    std::tie(dt, substeps) = stepSize(params);
-  } else {
-    std::tie(dt, substeps) = stepSize(params);
-    sim::checkStable(params, dt);
-    initial = sim::initialState(o.init, params, dt);
   }
+  // The time step: given, or the fewest substeps of a frame within the margin.
+  const bool givenStep = command.count("--dt") > 0;
+  const uint32_t substeps = givenStep ? 1u : sim::substepsFor(params, o.frameTime);
+  const double dt = givenStep ? o.dt : o.frameTime / substeps;
   sim::checkStable(params, dt);
+  if (!fromFile) initial = sim::initialState(o.init, params, dt);
   const uint64_t totalSteps = o.steps * substeps;
 
   double maxHeight = 0.0;

@@ -45,8 +45,10 @@ double waterStep(const scene::Water& w) { return double(w.frameTime) / waterSubs
 sim::WaterState waterInitialState(const scene::Water& w) {
   const sim::WaterParams p = waterParams(w);
   sim::WaterState s = sim::flatState(w.grid);
-  const double half = 0.5 * w.extent;
-  for (const scene::Drop& d : w.drops) sim::addDrop(s, w.extent, d.x + half, d.z + half, d.radius, d.amplitude);
+  for (const scene::Drop& d : w.drops) {
+    const glm::vec3 centre = worldToGrid(w, {d.x, 0.0f, d.z});
+    sim::addDrop(s, w.extent, centre.x, centre.z, d.radius, d.amplitude);
+  }
   sim::startAtRest(s, p, waterStep(w));
   return s;
 }
