@@ -40,7 +40,11 @@ function(tidepool_compile_shaders)
     VERBATIM)
   set(TIDEPOOL_SPIRV_CPP ${embedded} PARENT_SCOPE)
 
-  add_custom_target(spirv DEPENDS ${outputs})
-  add_custom_target(update_spirv ${copies} DEPENDS ${outputs}
+  # The `spirv` target owns every shader command. Targets that use the
+  # outputs depend on it, so that no two targets run one command at once
+  # (with make -j both would write the same .spv and race).
+  add_custom_target(spirv DEPENDS ${outputs} ${embedded})
+  add_custom_target(update_spirv ${copies}
     COMMENT "Copying fresh SPIR-V into spirv/")
+  add_dependencies(update_spirv spirv)
 endfunction()
