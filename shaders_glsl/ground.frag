@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The checkered ground plane (lib/ground_shading.glsl).
-#include "lib/ground_shading.glsl"
+// The checkered ground plane (shared/shading.h).
+#include "shared/shading.h"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // The pool floor: an n x n grid over the pool drawn with an index buffer, its
 // height and normal from the shared terrain function (shared/pool.h).
-#include "lib/pool_shading.glsl"
+#include "shared/shading.h"
 
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Pool { PoolParams pool; };
@@ -15,6 +15,6 @@ void main() {
   const vec2 uv = vec2(gl_VertexIndex % n, gl_VertexIndex / n) / float(n - 1);
   const vec2 xz = (uv * 2.0 - 1.0) * pool.box.x;
   worldPosition = vec3(xz.x, poolFloorHeight(pool, xz), xz.y);
-  worldNormal = poolFloorNormal(pool, xz, 0.01);
+  worldNormal = poolFloorNormal(pool, xz, kPoolFloorNormalSpacing);
   gl_Position = frame.viewProjection * vec4(worldPosition, 1.0);
 }

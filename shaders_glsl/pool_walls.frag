@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The pool's walls, Lambertian (lib/pool_shading.glsl).
-#include "lib/pool_shading.glsl"
+// The pool's walls, Lambertian (shared/shading.h).
+#include "shared/shading.h"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;

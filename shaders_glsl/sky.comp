@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Fills the equirectangular HDR sky texture from the procedural sky.
 #include "shared/sky.h"
-#include "lib/equirect.glsl"
+#include "shared/shading.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba16f) uniform writeonly image2D skyImage;

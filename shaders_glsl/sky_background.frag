@@ -3,7 +3,7 @@
 // The sky behind everything: the view ray through each pixel looks up the
 // equirectangular sky texture.
 #include "shared/frame.h"
-#include "lib/equirect.glsl"
+#include "shared/shading.h"
 
 layout(location = 0) in vec2 ndc;
 layout(location = 0) out vec4 color;

@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// A Lambertian sphere (lib/sphere_shading.glsl).
-#include "lib/sphere_shading.glsl"
+// A Lambertian sphere (shared/shading.h).
+#include "shared/shading.h"
 #include "shared/objects.h"
 
 layout(location = 0) in vec3 worldPosition;

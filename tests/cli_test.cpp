@@ -70,6 +70,24 @@ TEST(Cli, AovsAreFloatChannelsAfterRgba) {
   EXPECT_NE(expectCleanFailure("render --aov Z,Q --out " + again.file("x.exr"), again, {}).find("Q"), std::string::npos);
 }
 
+TEST(Cli, ReferenceWritesTheRasterLayoutAndReportsProgress) {
+  ScratchDir dir;
+  const std::string exr = dir.file("ref.exr"), png = dir.file("ref.png");
+  ProcessResult r = runTidepool("render --reference --samples 4 --frame 3 --validate --width 48 --height 32 --aov Z,N --out " +
+                                    exr + " --png " + png,
+                                dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("reference: 100%"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(png));
+  auto in = OIIO::ImageInput::open(exr);
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().channelnames, (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z"}));
+  ScratchDir bad;
+  const std::string out = " --out " + bad.file("x.exr");
+  expectCleanFailure("render --reference --samples 0" + out, bad, {});
+  expectCleanFailure("render --reference --profile" + out, bad, {});
+}
+
 TEST(Cli, SameFrameTwiceGivesIdenticalPixels) {
   ScratchDir dir;
   const std::string a = dir.file("a.exr"), b = dir.file("b.exr");

@@ -1,26 +1,9 @@
-// Shading of the pool's walls and floor, and the exact cast of a ray from
-// inside the pool against them (the refracted rays of the water surface).
+// The exact cast of a ray from inside the pool against its walls and floor
+// (the refracted rays of the water surface); shading is in shared/shading.h.
 #ifndef TP_LIB_POOL_SHADING
 #define TP_LIB_POOL_SHADING
-#include "lib/ground_shading.glsl"
 #include "shared/pool.h"
-
-// Floor normal from central differences of the height function; `spacing` is
-// the finite-difference step in metres.
-vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
-  float dx = poolFloorHeight(pool, xz + vec2(spacing, 0.0)) - poolFloorHeight(pool, xz - vec2(spacing, 0.0));
-  float dz = poolFloorHeight(pool, xz + vec2(0.0, spacing)) - poolFloorHeight(pool, xz - vec2(0.0, spacing));
-  return normalize(vec3(-dx, 2.0 * spacing, -dz));
-}
-
-vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
-  return groundRadiance(pool.tiles, frame, position.xz, footprint, normal);
-}
-
-vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {
-  vec3 irradiance = frame.sunIrradiance.rgb * max(dot(normal, frame.sunDirection.xyz), 0.0) + 0.5 * frame.skyIrradiance.rgb;
-  return pool.wallAlbedo.rgb / GROUND_PI * irradiance;
-}
+#include "shared/shading.h"
 
 struct PoolHit {
   float distance;
@@ -51,7 +34,7 @@ PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
         if (m.y <= poolFloorHeight(pool, m.xz)) hi = mid; else lo = mid;
       }
       vec3 hit = origin + hi * dir;
-      return PoolHit(hi, hit, poolFloorNormal(pool, hit.xz, 0.01), true);
+      return PoolHit(hi, hit, poolFloorNormal(pool, hit.xz, kPoolFloorNormalSpacing), true);
     }
     previous = s;
   }

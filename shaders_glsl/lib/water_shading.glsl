@@ -4,9 +4,7 @@
 // Schlick's Fresnel.
 #ifndef TP_LIB_WATER_SHADING
 #define TP_LIB_WATER_SHADING
-#include "lib/equirect.glsl"
 #include "lib/pool_shading.glsl"
-#include "lib/sphere_shading.glsl"
 #include "shared/objects.h"
 #include "shared/water_surface.h"
 

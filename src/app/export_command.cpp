@@ -4,11 +4,9 @@
 #include <optional>
 
 #include "app/gpu_session.hpp"
-#include "gpu/submit.hpp"
 #include "io/mesh_io.hpp"
 #include "render/water_model.hpp"
 #include "scene/scene_file.hpp"
-#include "sim/gpu_stepper.hpp"
 
 namespace tp::app {
 
@@ -31,13 +29,7 @@ int runExport(const ExportOptions& o) {
   if (scene.water.enabled) {
     // The same simulation the renderer runs for this frame.
     GpuSession session(o.validate, o.device);
-    sim::GpuStepper stepper(session.context(), render::waterParams(scene.water), render::waterInitialState(scene.water),
-                            sim::StepKernel::OnePerDispatch);
-    const uint64_t steps = uint64_t(o.frame) * render::waterSubsteps(scene.water);
-    gpu::submitAndWait(session.context(), [&](const vk::raii::CommandBuffer& cmd) {
-      render::recordWaterSteps(cmd, stepper, scene, 0, steps);
-    }, "water simulation");
-    water = stepper.download();
+    water = render::simulateWater(session.context(), scene, o.frame);
     exitCode = session.finish();
   }
   const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr, float(o.frame) * scene.water.frameTime);

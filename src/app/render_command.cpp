@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "app/gpu_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
+#include "render/image_error.hpp"
+#include "render/reference_tracer.hpp"
 #include "render/renderer.hpp"
+#include "render/water_model.hpp"
 #include "scene/scene_file.hpp"
 
 namespace tp::app {
@@ -59,6 +63,21 @@ io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<st
   return image;
 }
 
+// The CPU reference of the frame; the water is still simulated on the GPU,
+// exactly as the renderer simulates it.
+render::RenderedFrame renderReferenceFrame(GpuSession& session, const scene::Scene& scene, const RenderOptions& o) {
+  std::optional<sim::WaterState> water;
+  if (scene.water.enabled) water = render::simulateWater(session.context(), scene, o.frame);
+  render::ReferenceOptions options{.samples = o.samples,
+                                   .progress = [](double done) {
+                                     std::fprintf(stderr, "reference: %3.0f%%\n", 100.0 * done);
+                                   }};
+  render::RenderedFrame frame =
+      render::renderReference(scene, water ? &*water : nullptr, o.frame, o.width, o.height, options);
+  if (!o.png.empty()) frame.srgb = render::tonemapToSrgb8(frame.rgba, scene.render.exposure);
+  return frame;
+}
+
 }  // namespace
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
@@ -76,13 +95,20 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
   half->excludes(full);
   addGpuOptions(cmd, o.validate, o.device);
-  cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
+  auto* profile = cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
   cmd->add_option("--aov", o.aovs,
                   "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
                   "P (P.x P.y P.z world position); infinite Z and P where nothing is hit")
       ->delimiter(',')
       ->type_name("LIST")
       ->check(CLI::IsMember({"Z", "N", "P"}));
+  cmd->add_flag("--reference", o.reference,
+                "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
+                "caustics): the ground truth for error figures; slow")
+      ->excludes(profile);
+  cmd->add_option("--samples", o.samples, "Samples per pixel of --reference")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 65536u));
   return cmd;
 }
 
@@ -102,8 +128,13 @@ int runRender(const RenderOptions& o) {
 
   const bool aovs = !o.aovs.empty();
   GpuSession session(o.validate, o.device);
-  render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs});
-  render::RenderedFrame frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs});
+  render::RenderedFrame frame;
+  if (o.reference) {
+    frame = renderReferenceFrame(session, scene, o);
+  } else {
+    render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs});
+    frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs});
+  }
 
   io::FloatImage image = withAovs(frame, o.aovs);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
@@ -111,7 +142,7 @@ int runRender(const RenderOptions& o) {
   io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
   io::writeExr(o.out, image, types, attributes);
   std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height, o.floatOutput ? "float" : "half",
-              session.context().deviceName().c_str());
+              o.reference ? "the CPU (reference)" : session.context().deviceName().c_str());
   if (!o.png.empty()) {
     io::writePng(o.png, frame.width, frame.height, frame.srgb);
     std::printf("wrote %s\n", o.png.c_str());

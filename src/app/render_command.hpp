@@ -18,6 +18,8 @@ struct RenderOptions {
   std::string device;
   bool profile = false;
   std::vector<std::string> aovs;  // Z, N, P
+  bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
+  uint32_t samples = 64;          // per pixel, with --reference
 };
 
 // Adds `tidepool render` and its options to the command line.

@@ -64,7 +64,7 @@ struct Renderer::Resources {
     if (skyFromImage) {
       const SkyImage image = loadSkyImage(scene.sky.image);
       sky = uploadSkyImage(ctx, image);
-      light = SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), skyImageIrradianceUp(image)};
+      light = skyImageLight(image);
       skyRef = graph.image("sky", sky, vk::ImageLayout::eShaderReadOnlyOptimal);
     } else {
       sky = gpu::createImage2D(ctx, {scene.sky.textureWidth, scene.sky.textureWidth / 2}, kSkyFormat,

@@ -1,5 +1,6 @@
 #include "render/sky_image.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/constants.hpp>
@@ -9,6 +10,7 @@
 #include "gpu/barriers.hpp"
 #include "gpu/submit.hpp"
 #include "io/image_io.hpp"
+#include "shared/shading.h"
 
 namespace tp::render {
 
@@ -32,13 +34,32 @@ glm::vec3 skyImageIrradianceUp(const SkyImage& image) {
   glm::dvec3 sum(0.0);
   const double dPhi = glm::two_pi<double>() / image.width, dTheta = glm::pi<double>() / image.height;
   for (uint32_t j = 0; j < image.height; ++j) {
-    const double theta = (j + 0.5) * dTheta;  // v = theta / pi, as lib/equirect.glsl
+    const double theta = (j + 0.5) * dTheta;  // v = theta / pi, as shared/shading.h
     const double cosUp = std::cos(theta);
     if (cosUp <= 0.0) continue;
     const double weight = cosUp * std::sin(theta) * dTheta * dPhi;
     for (uint32_t i = 0; i < image.width; ++i) sum += glm::dvec3(glm::vec3(image.texels[size_t(j) * image.width + i])) * weight;
   }
   return glm::vec3(sum);
+}
+
+SkyLight skyImageLight(const SkyImage& image) {
+  return SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), skyImageIrradianceUp(image)};
+}
+
+glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d) {
+  const glm::vec2 uv = shader::directionToEquirect(d);
+  const float x = uv.x * float(image.width) - 0.5f, y = uv.y * float(image.height) - 0.5f;
+  const float x0 = std::floor(x), y0 = std::floor(y);
+  const float fx = x - x0, fy = y - y0;
+  auto texel = [&](int64_t i, int64_t j) {
+    const int64_t w = image.width, h = image.height;
+    i = ((i % w) + w) % w;
+    j = std::clamp<int64_t>(j, 0, h - 1);
+    return glm::vec3(image.texels[size_t(j * w + i)]);
+  };
+  const int64_t i = int64_t(x0), j = int64_t(y0);
+  return glm::mix(glm::mix(texel(i, j), texel(i + 1, j), fx), glm::mix(texel(i, j + 1), texel(i + 1, j + 1), fx), fy);
 }
 
 gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "gpu/memory.hpp"
+#include "render/sky_model.hpp"
 
 namespace tp::render {
 
@@ -19,6 +20,13 @@ SkyImage loadSkyImage(const std::string& path);
 // Irradiance on an up-facing surface: the image integrated over the upper
 // hemisphere, cosine weighted, each texel's solid angle (2 pi / W)(pi / H) sin(theta).
 glm::vec3 skyImageIrradianceUp(const SkyImage& image);
+
+// The light of a frame under the image: its irradiance alone, no sun.
+SkyLight skyImageLight(const SkyImage& image);
+
+// Radiance along unit direction d, bilinear between texel centres, wrapping
+// around in u and clamped in v, as the renderer's sampler reads the texture.
+glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d);
 
 // A half-float sampled texture holding the image, left in the shader-read layout.
 gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image);

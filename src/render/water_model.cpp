@@ -1,7 +1,10 @@
 #include "render/water_model.hpp"
 
+#include <algorithm>
+
 #include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
+#include "gpu/submit.hpp"
 
 namespace tp::render {
 
@@ -32,6 +35,30 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
     }
     water.recordSteps(cmd, 1, dt);
   }
+}
+
+sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
+  sim::GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::OnePerDispatch);
+  const uint64_t steps = uint64_t(frame) * waterSubsteps(scene.water);
+  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterSteps(cmd, stepper, scene, 0, steps); },
+                     "water simulation");
+  return stepper.download();
+}
+
+std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent) {
+  const int64_t n = water.n;
+  const float h = extent / float(n);
+  auto u = [&](int64_t i, int64_t j) { return water.u[size_t(std::clamp<int64_t>(j, 0, n - 1) * n + std::clamp<int64_t>(i, 0, n - 1))]; };
+  std::vector<glm::vec3> normals(size_t(n * n));
+  for (int64_t j = 0; j < n; ++j) {
+    for (int64_t i = 0; i < n; ++i) {
+      const float dx = float(std::min(i + 1, n - 1) - std::max<int64_t>(i - 1, 0)) * h;
+      const float dz = float(std::min(j + 1, n - 1) - std::max<int64_t>(j - 1, 0)) * h;
+      const float dudx = float(u(i + 1, j) - u(i - 1, j)) / dx, dudz = float(u(i, j + 1) - u(i, j - 1)) / dz;
+      normals[size_t(j * n + i)] = glm::normalize(glm::vec3(-dudx, 1.0f, -dudz));
+    }
+  }
+  return normals;
 }
 
 glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {

@@ -18,6 +18,10 @@ namespace tp::render {
 void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water, const scene::Scene& scene,
                       uint64_t first, uint64_t count);
 
+// The scene's water after `frame` frames, simulated on the GPU exactly as the
+// renderer does it, downloaded (for export and the CPU reference).
+sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame);
+
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
 sim::WaterParams waterParams(const scene::Water& water);
@@ -33,6 +37,10 @@ std::vector<uint32_t> waterGridIndices(uint32_t n);
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
 // The ground's push constants, with the pool's hole when there is a pool.
 shader::GroundParams groundParams(const scene::Scene& scene);
+
+// Unit normals of the surface's vertices from central differences of u, one
+// sided at the edges: the normals water_surface.vert computes.
+std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent);
 
 // The triangles a frame shows, in world space: the ground around the pool's
 // hole, the pool's walls and floor, and, given its state, the water surface.

@@ -1,0 +1,105 @@
+// The local shading of every surface (Lambertian, lit by the sun without
+// shadows and by the sky's irradiance), the equirectangular mapping and the
+// one analytic ray cast the water's rays need, compiled both as GLSL and as
+// C++: the raster passes and the CPU reference (render/reference_*) shade
+// with the same functions, so that their difference measures only the paths
+// the light takes.
+#ifndef TP_SHARED_SHADING_H
+#define TP_SHARED_SHADING_H
+#include "shared/frame.h"
+#include "shared/ground.h"
+#include "shared/interop.h"
+#include "shared/pool.h"
+
+TP_BEGIN
+
+const float kPi = 3.14159265358979323846f;
+
+// Equirectangular mapping: u = phi / 2pi + 1/2 with phi = atan(z, x), v = theta / pi
+// with theta = acos(y), the original course project's convention.
+TP_INLINE vec2 directionToEquirect(vec3 d) {
+  return vec2(atan(d.z, d.x) / (2.0f * kPi) + 0.5f, acos(clamp(d.y, -1.0f, 1.0f)) / kPi);
+}
+
+TP_INLINE vec3 equirectToDirection(vec2 uv) {
+  float phi = (uv.x - 0.5f) * 2.0f * kPi;
+  float theta = uv.y * kPi;
+  return vec3(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
+}
+
+// Integral from 0 to x of the square wave that is +1 on [0,1) and -1 on [1,2), period 2.
+TP_INLINE vec2 squareWaveIntegral(vec2 x) {
+  vec2 f = fract(x * 0.5f);
+  return 2.0f * (f - 2.0f * max(f - 0.5f, 0.0f));
+}
+
+// Fraction of the footprint [p - w/2, p + w/2]^2 on odd squares (0..1): the box
+// filter is separable, so the mean of the product of the two square waves is
+// the product of their means. Filtering keeps the checker from aliasing; a
+// zero footprint point-samples it (the reference filters by its samples).
+TP_INLINE float filteredChecker(vec2 p, vec2 w) {
+  if (w.x <= 0.0f || w.y <= 0.0f) {
+    vec2 f = fract(p * 0.5f);
+    return (f.x < 0.5f) != (f.y < 0.5f) ? 1.0f : 0.0f;
+  }
+  w = max(w, vec2(1e-6f));
+  vec2 wave = (squareWaveIntegral(p + 0.5f * w) - squareWaveIntegral(p - 0.5f * w)) / w;
+  return 0.5f - 0.5f * wave.x * wave.y;
+}
+
+// Radiance leaving the checkered ground at world xz (pixel footprint in
+// metres) with normal n, lit by the sun and by the sky's irradiance on an
+// up-facing surface.
+TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n) {
+  vec2 p = xz / ground.plane.z;
+  float odd = filteredChecker(p, footprint / ground.plane.z);
+  vec3 albedo = mix(vec3(ground.albedoA), vec3(ground.albedoB), odd);
+  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + vec3(frame.skyIrradiance);
+  return albedo / kPi * irradiance;
+}
+
+// The finite-difference step of the floor's normals, in metres: well below the
+// finest octave's lattice spacing, well above float round-off of the heights.
+const float kPoolFloorNormalSpacing = 0.01f;
+
+// Floor normal from central differences of the height function; `spacing` is
+// the finite-difference step in metres.
+TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
+  float dx = poolFloorHeight(pool, xz + vec2(spacing, 0.0f)) - poolFloorHeight(pool, xz - vec2(spacing, 0.0f));
+  float dz = poolFloorHeight(pool, xz + vec2(0.0f, spacing)) - poolFloorHeight(pool, xz - vec2(0.0f, spacing));
+  return normalize(vec3(-dx, 2.0f * spacing, -dz));
+}
+
+TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
+  return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal);
+}
+
+// The walls see half the sky.
+TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {
+  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
+                    0.5f * vec3(frame.skyIrradiance);
+  return vec3(pool.wallAlbedo) / kPi * irradiance;
+}
+
+// Lambertian spheres: the sky's irradiance scaled for the part of the sky a
+// tilted surface sees (1/2 (1 + n.y)).
+TP_INLINE vec3 sphereRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {
+  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
+                    0.5f * (1.0f + n.y) * vec3(frame.skyIrradiance);
+  return albedo / kPi * irradiance;
+}
+
+// Distance along origin + s dir (dir unit) to the sphere's front surface, or -1.
+TP_INLINE float raySphere(vec3 origin, vec3 dir, vec4 sphere) {
+  vec3 oc = origin - vec3(sphere);
+  float b = dot(oc, dir);
+  float c = dot(oc, oc) - sphere.w * sphere.w;
+  float discriminant = b * b - c;
+  if (discriminant < 0.0f) return -1.0f;
+  float s = -b - sqrt(discriminant);
+  return s > 0.0f ? s : -1.0f;
+}
+
+TP_END
+
+#endif

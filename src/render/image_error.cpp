@@ -1,0 +1,43 @@
+#include "render/image_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "shared/tonemap.h"
+
+namespace tp::render {
+
+std::vector<uint8_t> tonemapToSrgb8(std::span<const float> rgba, float exposure) {
+  std::vector<uint8_t> out(rgba.size());
+  for (size_t p = 0; p < rgba.size() / 4; ++p) {
+    const glm::vec3 display = shader::tonemap(glm::vec3(rgba[p * 4], rgba[p * 4 + 1], rgba[p * 4 + 2]), exposure);
+    for (int c = 0; c < 3; ++c) out[p * 4 + c] = uint8_t(std::lround(std::clamp(display[c], 0.0f, 1.0f) * 255.0f));
+    out[p * 4 + 3] = 255;
+  }
+  return out;
+}
+
+ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
+                           std::span<const uint8_t> mask) {
+  if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("tonemappedError: images differ in size");
+  const size_t pixels = a.size() / 4;
+  if (!mask.empty() && mask.size() != pixels) throw std::invalid_argument("tonemappedError: mask differs in size");
+  ImageError e;
+  double sum = 0.0;
+  for (size_t p = 0; p < pixels; ++p) {
+    if (!mask.empty() && !mask[p]) continue;
+    const glm::vec3 da = shader::tonemap(glm::vec3(a[p * 4], a[p * 4 + 1], a[p * 4 + 2]), exposure);
+    const glm::vec3 db = shader::tonemap(glm::vec3(b[p * 4], b[p * 4 + 1], b[p * 4 + 2]), exposure);
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(da[c]) - double(db[c]);
+      sum += d * d;
+      e.maxError = std::max(e.maxError, std::abs(d));
+    }
+    ++e.pixels;
+  }
+  e.rmse = e.pixels ? std::sqrt(sum / double(3 * e.pixels)) : 0.0;
+  return e;
+}
+
+}  // namespace tp::render

@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace tp::render {
+
+// The tonemap pass on the CPU (shared/tonemap.h): linear RGBA to RGBA8 sRGB,
+// alpha 255, rounded as a UNORM store rounds.
+std::vector<uint8_t> tonemapToSrgb8(std::span<const float> rgba, float exposure);
+
+struct ImageError {
+  double rmse = 0.0;      // over the RGB channels of the compared pixels
+  double maxError = 0.0;  // largest channel difference
+  size_t pixels = 0;      // pixels compared
+};
+
+// The difference a viewer sees: both linear RGBA images tonemapped (without
+// the 8-bit rounding), in display units 0..1. With a mask (one byte per
+// pixel), only pixels whose byte is non-zero count.
+ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
+                           std::span<const uint8_t> mask = {});
+
+}  // namespace tp::render

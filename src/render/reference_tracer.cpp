@@ -1,0 +1,257 @@
+#include "render/reference_tracer.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "render/frame_uniforms.hpp"
+#include "render/pool_model.hpp"
+#include "render/reference_scene.hpp"
+#include "render/sky_image.hpp"
+#include "render/sky_model.hpp"
+#include "render/water_model.hpp"
+#include "shared/shading.h"
+#include "shared/sky.h"
+
+namespace tp::render {
+namespace {
+
+// How far a continued ray starts off the surface it leaves, in metres: far
+// above float round-off at the scene's scale (metres), far below any feature.
+constexpr float kSurfaceOffset = 1e-4f;
+
+enum class Material { Ground, PoolWalls, PoolFloor, Water, Other };
+
+Material materialOf(const std::string& meshName) {
+  if (meshName == "ground") return Material::Ground;
+  if (meshName == "pool_walls") return Material::PoolWalls;
+  if (meshName == "pool_floor") return Material::PoolFloor;
+  if (meshName == "water") return Material::Water;
+  return Material::Other;
+}
+
+// Base-2 radical inverse: the second coordinate of the Hammersley points.
+float radicalInverse(uint32_t k) {
+  uint32_t bits = k;
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return float(bits) * 2.3283064365386963e-10f;
+}
+
+// Unpolarised Fresnel reflectance for a ray meeting a surface at cosI, going
+// from index n1 into n2; 1 under total internal reflection (cosT < 0 then).
+float fresnel(float cosI, float n1, float n2, float& cosT) {
+  const float eta = n1 / n2;
+  const float sin2T = eta * eta * (1.0f - cosI * cosI);
+  if (sin2T >= 1.0f) {
+    cosT = -1.0f;
+    return 1.0f;
+  }
+  cosT = std::sqrt(1.0f - sin2T);
+  const float rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+  const float rp = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+struct SurfacePoint {
+  glm::vec3 position{std::numeric_limits<float>::infinity()};
+  glm::vec3 normal{0.0f};
+};
+
+class Tracer {
+ public:
+  Tracer(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const shader::FrameUniforms& uniforms,
+         std::optional<SkyImage> skyImage, uint32_t maxSpecular)
+      : uniforms_(uniforms),
+        sky_(skyParams(scene.sky)),
+        skyImage_(std::move(skyImage)),
+        ground_(groundParams(scene)),
+        maxSpecular_(maxSpecular),
+        absorption_(scene.water.absorption),
+        ior_(scene.water.ior) {
+    if (hasPool(scene)) pool_ = poolParams(scene);
+    const float time = float(frame) * scene.water.frameTime;
+    std::vector<scene::Mesh> traced;
+    for (auto& mesh : sceneMeshes(scene, water, time)) {
+      const Material m = materialOf(mesh.name);
+      if (m == Material::Other) continue;  // the spheres: cast exactly instead of their tessellation
+      materials_.push_back(m);
+      if (m == Material::Water) waterMesh_ = int(traced.size());
+      traced.push_back(std::move(mesh));
+    }
+    std::vector<glm::vec4> spheres;
+    for (const auto& s : scene.spheres) {
+      spheres.push_back(glm::vec4(scene::sphereCenterAt(s, time), s.radius));
+      sphereAlbedo_.push_back(s.albedo);
+    }
+    if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
+    bvh_ = std::make_unique<ReferenceScene>(traced, spheres);
+    tracedMeshes_ = std::move(traced);
+    spheres_ = std::move(spheres);
+  }
+
+  // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
+  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, SurfacePoint* first) const {
+    const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
+    if (!hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
+    const glm::vec3 p = origin + hit.distance * dir;
+    const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * hit.distance) : glm::vec3(1.0f);
+    if (hit.sphere >= 0) {
+      const glm::vec3 n = glm::normalize(p - glm::vec3(spheres_[size_t(hit.sphere)]));
+      if (first) *first = {p, n};
+      return transmittance * shader::sphereRadiance(uniforms_, sphereAlbedo_[size_t(hit.sphere)], n);
+    }
+    const glm::vec2 xz(p.x, p.z);
+    switch (materials_[size_t(hit.mesh)]) {
+      case Material::Ground: {
+        const glm::vec3 n(0.0f, 1.0f, 0.0f);
+        if (first) *first = {p, n};
+        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n);
+      }
+      case Material::PoolWalls: {
+        const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+        if (first) *first = {p, n};
+        return transmittance * shader::poolWallRadiance(pool_, uniforms_, n);
+      }
+      case Material::PoolFloor: {
+        const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
+        if (first) *first = {p, n};
+        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f));
+      }
+      case Material::Water:
+        return transmittance * water(p, dir, hit, specular, first);
+      case Material::Other:
+        break;
+    }
+    return glm::vec3(0.0f);
+  }
+
+ private:
+  glm::vec3 sky(glm::vec3 dir) const {
+    return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
+  }
+
+  // Both branches at the surface, weighted by the exact Fresnel reflectance.
+  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, SurfacePoint* first) const {
+    const scene::Mesh& mesh = tracedMeshes_[size_t(waterMesh_)];
+    const uint32_t* corner = &mesh.indices[size_t(hit.triangle) * 3];
+    const glm::vec2 b = hit.barycentric;
+    const glm::vec3 shading = glm::normalize((1.0f - b.x - b.y) * waterNormals_[corner[0]] +
+                                             b.x * waterNormals_[corner[1]] + b.y * waterNormals_[corner[2]]);
+    if (first) *first = {p, shading};
+    if (specular >= maxSpecular_) return glm::vec3(0.0f);
+    const glm::vec3 up = hit.geometricNormal.y < 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+    const bool fromAbove = glm::dot(dir, up) < 0.0f;
+    glm::vec3 n = fromAbove ? shading : -shading;  // facing the ray
+    float cosI = -glm::dot(dir, n);
+    if (cosI <= 0.0f) {  // an interpolated normal facing away: fall back to the flat triangle's
+      n = fromAbove ? up : -up;
+      cosI = -glm::dot(dir, n);
+    }
+    float cosT = 0.0f;
+    const float n1 = fromAbove ? 1.0f : ior_, n2 = fromAbove ? ior_ : 1.0f;
+    const float reflectance = fresnel(cosI, n1, n2, cosT);
+    auto follow = [&](glm::vec3 d) {
+      const bool below = glm::dot(d, up) < 0.0f;
+      const glm::vec3 start = p + (below ? -kSurfaceOffset : kSurfaceOffset) * up;
+      return radiance(start, d, below, specular + 1, nullptr);
+    };
+    glm::vec3 result = reflectance * follow(glm::normalize(dir + 2.0f * cosI * n));
+    if (reflectance < 1.0f) {
+      const float eta = n1 / n2;
+      result += (1.0f - reflectance) * follow(glm::normalize(eta * dir + (eta * cosI - cosT) * n));
+    }
+    return result;
+  }
+
+  shader::FrameUniforms uniforms_;
+  shader::SkyParams sky_;
+  std::optional<SkyImage> skyImage_;
+  shader::GroundParams ground_;
+  shader::PoolParams pool_{};
+  uint32_t maxSpecular_;
+  glm::vec3 absorption_;
+  float ior_;
+  std::vector<scene::Mesh> tracedMeshes_;
+  std::vector<Material> materials_;
+  int waterMesh_ = -1;
+  std::vector<glm::vec3> waterNormals_;
+  std::vector<glm::vec4> spheres_;
+  std::vector<glm::vec3> sphereAlbedo_;
+  std::unique_ptr<ReferenceScene> bvh_;
+};
+
+}  // namespace
+
+RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, uint32_t width,
+                              uint32_t height, const ReferenceOptions& options) {
+  if (options.samples == 0) throw std::invalid_argument("reference samples must be at least 1");
+  std::optional<SkyImage> skyImage;
+  SkyLight light = proceduralSkyLight(scene.sky);
+  if (!scene.sky.image.empty()) {
+    skyImage = loadSkyImage(scene.sky.image);
+    light = skyImageLight(*skyImage);
+  }
+  const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
+  const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
+
+  RenderedFrame out;
+  out.width = width;
+  out.height = height;
+  out.worldToCamera = uniforms.view;
+  out.worldToNDC = uniforms.viewProjection;
+  const size_t pixels = size_t(width) * height;
+  out.rgba.assign(pixels * 4, 0.0f);
+  out.normal.assign(pixels * 4, 0.0f);
+  out.position.assign(pixels * 4, std::numeric_limits<float>::infinity());
+
+  const glm::vec3 eye = scene.camera.position;
+  // The ray through a point of the image (pixels, top-left origin) from the near plane on.
+  auto cameraRay = [&](float px, float py, glm::vec3& origin, glm::vec3& dir) {
+    const glm::vec2 ndc(2.0f * px / float(width) - 1.0f, 2.0f * py / float(height) - 1.0f);
+    const glm::vec4 nearPoint = uniforms.inverseViewProjection * glm::vec4(ndc, 0.0f, 1.0f);
+    origin = glm::vec3(nearPoint) / nearPoint.w;
+    dir = glm::normalize(origin - eye);
+  };
+  std::atomic<uint32_t> rowsDone{0};
+  uint32_t reported = 0;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const size_t k = size_t(y) * width + x;
+      glm::vec3 origin, dir, sum(0.0f);
+      for (uint32_t s = 0; s < options.samples; ++s) {
+        const float sx = (float(s) + 0.5f) / float(options.samples), sy = options.samples == 1 ? 0.5f : radicalInverse(s);
+        cameraRay(float(x) + sx, float(y) + sy, origin, dir);
+        sum += tracer.radiance(origin, dir, false, 0, nullptr);
+      }
+      const glm::vec3 color = sum / float(options.samples);
+      SurfacePoint first;
+      cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
+      tracer.radiance(origin, dir, false, options.maxSpecular, &first);  // no branches: the surface alone
+      for (int c = 0; c < 3; ++c) {
+        out.rgba[k * 4 + c] = color[c];
+        out.normal[k * 4 + c] = first.normal[c];
+        out.position[k * 4 + c] = first.position[c];
+      }
+      out.rgba[k * 4 + 3] = 1.0f;
+      if (std::isfinite(first.position.x)) out.position[k * 4 + 3] = -(uniforms.view * glm::vec4(first.position, 1.0f)).z;
+    }
+    const uint32_t done = ++rowsDone;
+    if (options.progress) {
+#pragma omp critical(reference_progress)
+      if (done * 10 / height > reported) {
+        reported = done * 10 / height;
+        options.progress(double(done) / height);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace tp::render
