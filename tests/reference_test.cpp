@@ -103,13 +103,7 @@ TEST_F(ReferenceRasterTest, AccurateRefractionIsCloserToTheReferenceThanApparent
   s.render.refraction = "apparent";
   render::Renderer apparent(ctx(), s, width, height);
   const auto b = apparent.render({.frame = frameNumber, .hdr = true});
-  // The pixels whose surface is the water: the accurate render's position AOV.
-  std::vector<uint8_t> waterMask(size_t(width) * height);
-  for (size_t k = 0; k < waterMask.size(); ++k) {
-    const glm::vec3 p(a.position[k * 4], a.position[k * 4 + 1], a.position[k * 4 + 2]);
-    waterMask[k] = std::abs(p.x) < 0.5f * s.water.extent && std::abs(p.z) < 0.5f * s.water.extent &&
-                   std::abs(p.y - s.water.level) < 0.1f;
-  }
+  const std::vector<uint8_t> waterMask = render::waterPixelMask(a, s.water);
   const auto ea = render::tonemappedError(a.rgba, reference.rgba, s.render.exposure);
   const auto eb = render::tonemappedError(b.rgba, reference.rgba, s.render.exposure);
   const auto wa = render::tonemappedError(a.rgba, reference.rgba, s.render.exposure, waterMask);

@@ -115,4 +115,26 @@ TEST(BenchCli, SimBenchmarkWritesItsTable) {
   EXPECT_NE(r.out.find("cpu openmp"), std::string::npos);
 }
 
+TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
+  ScratchDir dir;
+  const std::string csv = dir.file("water.csv");
+  ProcessResult r = runTidepool("bench water --resolutions 48x32 --samples 2 --repeats 1 --frame 3 --csv " + csv +
+                                    " --plot ''",
+                                dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("view,width,height,mode,refraction_ms,", 0), 0u) << line;
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 3 * 2);  // three views, two modes
+  ScratchDir bad;
+  for (const char* size : {"48", "48x", "0x32", "48x32x2", "5000x10"}) {
+    const std::string error =
+        expectCleanFailure(std::string("bench water --resolutions ") + size + " --csv " + bad.file("x.csv"), bad, {});
+    EXPECT_NE(error.find(size), std::string::npos) << error;
+  }
+}
+
 }  // namespace tp::test

@@ -4,7 +4,7 @@
 // Schlick's Fresnel.
 #ifndef TP_LIB_WATER_SHADING
 #define TP_LIB_WATER_SHADING
-#include "lib/pool_shading.glsl"
+#include "shared/shading.h"
 #include "shared/objects.h"
 #include "shared/water_surface.h"
 

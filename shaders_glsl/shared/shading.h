@@ -1,7 +1,7 @@
 // The local shading of every surface (Lambertian, lit by the sun without
 // shadows and by the sky's irradiance), the equirectangular mapping and the
-// one analytic ray cast the water's rays need, compiled both as GLSL and as
-// C++: the raster passes and the CPU reference (render/reference_*) shade
+// casts of the water's refracted rays against the pool and the spheres,
+// compiled both as GLSL and as C++: the raster passes and the CPU reference (render/reference_*) shade
 // with the same functions, so that their difference measures only the paths
 // the light takes.
 #ifndef TP_SHARED_SHADING_H
@@ -79,6 +79,54 @@ TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 norma
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
                     0.5f * vec3(frame.skyIrradiance);
   return vec3(pool.wallAlbedo) / kPi * irradiance;
+}
+
+struct PoolHit {
+  float distance;
+  vec3 position;
+  vec3 normal;
+  bool floor;
+};
+
+TP_INLINE PoolHit poolHit(float distance, vec3 position, vec3 normal, bool onFloor) {
+  PoolHit h;
+  h.distance = distance;
+  h.position = position;
+  h.normal = normal;
+  h.floor = onFloor;
+  return h;
+}
+
+// The first wall or floor point along origin + s dir (origin inside the pool,
+// dir going down): the walls analytically, the floor by marching the height
+// field in noise.z steps up to the walls and bisecting noise.w times. The
+// accurate refraction mode's cast, shared with C++ to measure it.
+TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
+  const float halfSize = pool.box.x;
+  float sx = dir.x > 0.0f ? (halfSize - origin.x) / dir.x : (dir.x < 0.0f ? (-halfSize - origin.x) / dir.x : 1e30f);
+  float sz = dir.z > 0.0f ? (halfSize - origin.z) / dir.z : (dir.z < 0.0f ? (-halfSize - origin.z) / dir.z : 1e30f);
+  float sWall = max(min(sx, sz), 0.0f);
+  float sBottom = dir.y < 0.0f ? (poolBottom(pool) - origin.y) / dir.y : 1e30f;
+  float sEnd = min(sWall, sBottom);
+  float previous = 0.0f;
+  for (uint i = 1u; i <= pool.noise.z; ++i) {
+    float s = sEnd * float(i) / float(pool.noise.z);
+    vec3 p = origin + s * dir;
+    if (p.y <= poolFloorHeight(pool, vec2(p.x, p.z))) {
+      float lo = previous, hi = s;
+      for (uint k = 0u; k < pool.noise.w; ++k) {
+        float mid = 0.5f * (lo + hi);
+        vec3 m = origin + mid * dir;
+        if (m.y <= poolFloorHeight(pool, vec2(m.x, m.z))) hi = mid; else lo = mid;
+      }
+      vec3 hit = origin + hi * dir;
+      return poolHit(hi, hit, poolFloorNormal(pool, vec2(hit.x, hit.z), kPoolFloorNormalSpacing), true);
+    }
+    previous = s;
+  }
+  vec3 wallPoint = origin + sWall * dir;
+  vec3 normal = sx < sz ? vec3(-sign(dir.x), 0.0f, 0.0f) : vec3(0.0f, 0.0f, -sign(dir.z));
+  return poolHit(sWall, wallPoint, normal, false);
 }
 
 // Lambertian spheres: the sky's irradiance scaled for the part of the sky a

@@ -14,11 +14,30 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")->capture_default_str()
       ->check(CLI::Range(0.01, 60.0));
   sim->add_option("--device", o.sim.device, "Use the Vulkan device whose name contains NAME")->type_name("NAME");
+  CLI::App* water = bench->add_subcommand(
+      "water", "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
+  water->add_option("--scene", o.water.scenePath, "Scene file (JSON); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  water->add_option("--resolutions", o.water.resolutions, "Image sizes WxH, each side 8 to 4096")
+      ->delimiter(',')
+      ->capture_default_str();
+  water->add_option("--frame", o.water.frame, "Frame of the water to render")->capture_default_str();
+  water->add_option("--samples", o.water.samples, "Samples per pixel of the reference")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4096u));
+  water->add_option("--repeats", o.water.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  water->add_option("--csv", o.water.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  water->add_option("--plot", o.water.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  water->add_option("--device", o.water.device, "Use the Vulkan device whose name contains NAME")->type_name("NAME");
   return bench;
 }
 
 int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
+  if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   return 2;
 }
 

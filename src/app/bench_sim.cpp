@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 
+#include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
 #include "app/plot.hpp"
 #include "gpu/submit.hpp"
@@ -60,21 +61,10 @@ class QuietReporter : public benchmark::BenchmarkReporter {
   void ReportRuns(const std::vector<Run>&) override {}
 };
 
-std::string fmt(const char* format, double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, x);
-  return buffer;
-}
-
 }  // namespace
 
 int runBenchSim(const BenchSimOptions& o) {
-  io::requireExtension(o.csv, ".csv");
-  io::checkWritable(o.csv);
-  if (!o.plot.empty()) {
-    io::requireExtension(o.plot, ".png");
-    io::checkWritable(o.plot);
-  }
+  checkBenchOutputs(o.csv, o.plot);
   GpuSession session(false, o.device);
   const gpu::Context& ctx = session.context();
   for (unsigned n : o.sizes) {
@@ -177,8 +167,8 @@ int runBenchSim(const BenchSimOptions& o) {
       std::printf("%6u  %-28s %10.4f %12.1f %8.2fx %14.3g %14.3g\n", n, methods[mi].name.c_str(), msPerStep, rate / 1e6,
                   rate / cpuRate, discrete, continuous);
       csv << n << "," << methods[mi].name << "," << (methods[mi].kernel == sim::StepKernel::Tiled && methods[mi].gpu ? methods[mi].halo : 1)
-          << "," << fmt("%.6g", msPerStep) << "," << fmt("%.6g", rate / 1e6) << "," << fmt("%.4g", rate / cpuRate) << ","
-          << fmt("%.6g", discrete) << "," << fmt("%.6g", continuous) << ",\"" << ctx.deviceName() << "\"\n";
+          << "," << formatNumber("%.6g", msPerStep) << "," << formatNumber("%.6g", rate / 1e6) << "," << formatNumber("%.4g", rate / cpuRate) << ","
+          << formatNumber("%.6g", discrete) << "," << formatNumber("%.6g", continuous) << ",\"" << ctx.deviceName() << "\"\n";
     }
   }
   csv.close();

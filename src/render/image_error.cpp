@@ -40,4 +40,15 @@ ImageError tonemappedError(std::span<const float> a, std::span<const float> b, f
   return e;
 }
 
+std::vector<uint8_t> waterPixelMask(const RenderedFrame& aovs, const scene::Water& water) {
+  std::vector<uint8_t> mask(size_t(aovs.width) * aovs.height);
+  if (aovs.position.size() != mask.size() * 4) throw std::invalid_argument("waterPixelMask: the frame has no position AOV");
+  for (size_t k = 0; k < mask.size(); ++k) {
+    const float* p = &aovs.position[k * 4];
+    mask[k] = std::abs(p[0]) < 0.5f * water.extent && std::abs(p[2]) < 0.5f * water.extent &&
+              std::abs(p[1] - water.level) < 0.1f;
+  }
+  return mask;
+}
+
 }  // namespace tp::render

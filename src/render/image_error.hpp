@@ -3,6 +3,9 @@
 #include <span>
 #include <vector>
 
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
 namespace tp::render {
 
 // The tonemap pass on the CPU (shared/tonemap.h): linear RGBA to RGBA8 sRGB,
@@ -20,5 +23,9 @@ struct ImageError {
 // pixel), only pixels whose byte is non-zero count.
 ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
                            std::span<const uint8_t> mask = {});
+
+// One byte per pixel, 1 where the frame's first surface (its position AOV) is
+// the water: inside the water's square, within 0.1 m of its rest level.
+std::vector<uint8_t> waterPixelMask(const RenderedFrame& aovs, const scene::Water& water);
 
 }  // namespace tp::render

@@ -1,0 +1,204 @@
+#include "app/bench_water.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+#include "app/bench_output.hpp"
+#include "app/gpu_session.hpp"
+#include "app/plot.hpp"
+#include "io/atomic_file.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/image_error.hpp"
+#include "render/pool_model.hpp"
+#include "render/reference_scene.hpp"
+#include "render/reference_tracer.hpp"
+#include "render/renderer.hpp"
+#include "render/water_model.hpp"
+#include "scene/scene_file.hpp"
+#include "shared/shading.h"
+
+namespace tp::app {
+namespace {
+
+struct View {
+  std::string name;
+  std::optional<scene::Camera> camera;  // none: the scene's own
+};
+
+// The scene's camera, one looking almost straight down (apparent depth's best
+// case) and one at a grazing angle (its worst).
+std::vector<View> benchViews(const scene::Scene& s) {
+  scene::Camera overhead = s.camera, grazing = s.camera;
+  overhead.position = {0.3f, 4.5f, 0.8f};
+  overhead.target = {0.0f, s.water.level, 0.0f};
+  grazing.position = {3.8f, 0.6f, 2.6f};
+  grazing.target = {0.0f, -0.4f, 0.0f};
+  return {{"scene", std::nullopt}, {"overhead", overhead}, {"grazing", grazing}};
+}
+
+struct Resolution {
+  uint32_t width = 0, height = 0;
+};
+
+Resolution parseResolution(const std::string& text) {
+  unsigned w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096) {
+    throw std::runtime_error("bench water: resolution '" + text + "' is not WxH with sides 8 to 4096");
+  }
+  return {w, h};
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? std::nan("") : v[v.size() / 2];
+}
+
+struct Timing {
+  double waterMs = 0.0, underwaterMs = 0.0, frameMs = 0.0;
+};
+
+// Median GPU milliseconds over `repeats` renders of one frame (after one to warm up).
+Timing timeFrames(render::Renderer& renderer, uint32_t frame, uint32_t repeats, render::RenderedFrame& last) {
+  std::vector<double> water, underwater, total;
+  last = renderer.render({.frame = frame, .hdr = true});
+  for (uint32_t r = 0; r < repeats; ++r) {
+    last = renderer.render({.frame = frame, .hdr = true});
+    double w = 0.0, u = 0.0, t = 0.0;
+    for (const auto& pass : last.passes) {
+      if (pass.name == "water") w += pass.milliseconds;
+      if (pass.name == "underwater") u += pass.milliseconds;
+      t += pass.milliseconds;
+    }
+    water.push_back(w);
+    underwater.push_back(u);
+    total.push_back(t);
+  }
+  return {median(water), median(underwater), median(total)};
+}
+
+glm::vec2 toPixel(const shader::FrameUniforms& u, glm::vec3 p) {
+  const glm::vec4 clip = u.viewProjection * glm::vec4(p, 1.0f);
+  return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(u.viewport);
+}
+
+struct FloorErrors {
+  double accuratePx = 0.0, apparentPx = 0.0;
+};
+
+// Where each mode reads what lies under the water, against where the exact
+// refracted ray (the reference's BVH, from the raster's own surface point and
+// normal) meets it, in pixels on screen, averaged over the water's pixels.
+// Accurate: the shared cast (tracePool, then the spheres) the shader runs.
+// Apparent: the texel the shader reads, whose centre shows that point.
+FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov, const std::vector<uint8_t>& water,
+                        const sim::WaterState& state, float time) {
+  std::vector<scene::Mesh> below;
+  for (auto& m : render::sceneMeshes(s, &state, time)) {
+    if (m.name != "water" && m.name.rfind("sphere", 0) != 0) below.push_back(std::move(m));
+  }
+  std::vector<glm::vec4> spheres;
+  for (const auto& sphere : s.spheres) spheres.push_back(glm::vec4(scene::sphereCenterAt(sphere, time), sphere.radius));
+  const render::ReferenceScene exact(below, spheres);
+  const shader::PoolParams pool = render::poolParams(s);
+  const auto u = render::frameUniforms(s, aov.width, aov.height);
+  const float meanFloor = pool.box.y - pool.box.z;
+  double accurate = 0.0, apparent = 0.0;
+  size_t count = 0;
+  for (size_t k = 0; k < water.size(); ++k) {
+    if (!water[k]) continue;
+    const glm::vec3 p(aov.position[k * 4], aov.position[k * 4 + 1], aov.position[k * 4 + 2]);
+    const glm::vec3 n = glm::normalize(glm::vec3(aov.normal[k * 4], aov.normal[k * 4 + 1], aov.normal[k * 4 + 2]));
+    const glm::vec3 view = glm::normalize(p - glm::vec3(u.cameraPosition));
+    const glm::vec3 t = glm::refract(view, n, 1.0f / s.water.ior);
+    if (glm::dot(t, t) == 0.0f || t.y >= 0.0f) continue;
+    const render::ReferenceHit truth = exact.intersect(p, t, 0.0f);
+    if (!truth.hit()) continue;
+    const glm::vec2 truePixel = toPixel(u, p + truth.distance * t);
+
+    const shader::PoolHit cast = shader::tracePool(pool, p, t);
+    float distance = cast.distance;
+    for (const glm::vec4& sphere : spheres) {
+      const float d = shader::raySphere(p, t, sphere);
+      if (d > 0.0f && d < distance) distance = d;
+    }
+    accurate += glm::length(toPixel(u, p + distance * t) - truePixel);
+
+    const float depth = std::max(p.y - meanFloor, 0.0f) / -t.y;
+    const glm::vec2 read = glm::clamp(glm::floor(toPixel(u, p + depth * t)), glm::vec2(0.0f), glm::vec2(u.viewport) - 1.0f);
+    apparent += glm::length(read + 0.5f - truePixel);
+    ++count;
+  }
+  if (count == 0) return {std::nan(""), std::nan("")};
+  return {accurate / double(count), apparent / double(count)};
+}
+
+}  // namespace
+
+int runBenchWater(const BenchWaterOptions& o) {
+  checkBenchOutputs(o.csv, o.plot);
+  std::vector<Resolution> resolutions;
+  for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r));
+  const scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");
+
+  GpuSession session(false, o.device);
+  const gpu::Context& ctx = session.context();
+  const sim::WaterState state = render::simulateWater(ctx, base, o.frame);
+  const float time = float(o.frame) * base.water.frameTime;
+
+  io::AtomicFile csvFile(o.csv);
+  std::ofstream csv(csvFile.tempPath());
+  csv << "view,width,height,mode,refraction_ms,water_ms,underwater_ms,frame_ms,rmse,rmse_water,max_error_water,"
+         "floor_error_px,water_pixels,reference_samples,reference_s,device\n";
+  std::printf("%-9s %9s  %-9s %9s %9s %8s %10s %9s %10s\n", "view", "size", "mode", "refr ms", "frame ms", "RMSE",
+              "RMSE water", "max water", "floor px");
+  for (const View& view : benchViews(base)) {
+    scene::Scene s = base;
+    if (view.camera) s.camera = *view.camera;
+    for (const Resolution& r : resolutions) {
+      std::fprintf(stderr, "bench water: %s %ux%u: reference with %u samples\n", view.name.c_str(), r.width, r.height,
+                   o.samples);
+      const auto start = std::chrono::steady_clock::now();
+      const render::RenderedFrame reference =
+          render::renderReference(s, &state, o.frame, r.width, r.height, {.samples = o.samples});
+      const double referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+      render::Renderer aovRenderer(ctx, s, r.width, r.height, {.aovs = true});
+      const render::RenderedFrame aov = aovRenderer.render({.frame = o.frame, .hdr = false, .aovs = true});
+      const std::vector<uint8_t> water = render::waterPixelMask(aov, s.water);
+      const FloorErrors floor = floorErrors(s, aov, water, state, time);
+
+      for (const char* mode : {"accurate", "apparent"}) {
+        s.render.refraction = mode;
+        render::Renderer renderer(ctx, s, r.width, r.height);
+        render::RenderedFrame frame;
+        const Timing t = timeFrames(renderer, o.frame, o.repeats, frame);
+        const auto all = render::tonemappedError(frame.rgba, reference.rgba, s.render.exposure);
+        const auto onWater = render::tonemappedError(frame.rgba, reference.rgba, s.render.exposure, water);
+        const double floorPx = std::string(mode) == "accurate" ? floor.accuratePx : floor.apparentPx;
+        const double refractionMs = t.waterMs + t.underwaterMs;
+        std::printf("%-9s %4ux%-4u  %-9s %9.3f %9.3f %8.4f %10.4f %9.4f %10.3f\n", view.name.c_str(), r.width, r.height,
+                    mode, refractionMs, t.frameMs, all.rmse, onWater.rmse, onWater.maxError, floorPx);
+        csv << view.name << "," << r.width << "," << r.height << "," << mode << "," << formatNumber("%.6g", refractionMs) << ","
+            << formatNumber("%.6g", t.waterMs) << "," << formatNumber("%.6g", t.underwaterMs) << "," << formatNumber("%.6g", t.frameMs) << ","
+            << formatNumber("%.6g", all.rmse) << "," << formatNumber("%.6g", onWater.rmse) << "," << formatNumber("%.6g", onWater.maxError) << ","
+            << formatNumber("%.6g", floorPx) << "," << onWater.pixels << "," << o.samples << "," << formatNumber("%.4g", referenceSeconds)
+            << ",\"" << ctx.deviceName() << "\"\n";
+      }
+    }
+  }
+  csv.close();
+  if (!csv) throw std::runtime_error("cannot write " + o.csv);
+  csvFile.commit();
+  std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.plot.empty()) plotCsv("plot_bench_water.py", o.csv, o.plot);
+  return session.finish();
+}
+
+}  // namespace tp::app
