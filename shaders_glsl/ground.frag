@@ -10,5 +10,5 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(push_constant) uniform Push { GroundParams ground; };
 
 void main() {
-  color = vec4(groundRadiance(ground, frame, worldPosition.xz, fwidth(worldPosition.xz), normalize(worldNormal)), 1.0);
+  color = vec4(groundRadiance(ground, frame, worldPosition.xz, fwidth(worldPosition.xz), normalize(worldNormal), 1.0), 1.0);
 }

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The tiled pool floor, Lambertian (shared/shading.h).
+// The tiled pool floor, Lambertian (shared/shading.h), the sun through the waves from the caustics texture.
 #include "shared/shading.h"
 
 layout(location = 0) in vec3 worldPosition;
@@ -8,7 +8,9 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Pool { PoolParams pool; };
+layout(binding = 2) uniform sampler2D caustics;
 
 void main() {
-  color = vec4(poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz)), 1.0);
+  const float caustic = texture(caustics, causticsUv(pool, worldPosition.xz)).r;
+  color = vec4(poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz), caustic), 1.0);
 }

@@ -5,6 +5,8 @@
 // the spheres, and attenuated along its path through the water.
 #include "lib/water_shading.glsl"
 
+layout(binding = 6) uniform sampler2D caustics;
+
 void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 n = normalize(worldNormal);
@@ -13,7 +15,8 @@ void main() {
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
   if (dot(t, t) > 0.0 && t.y < 0.0) {  // from above there is no total internal reflection
     const PoolHit hit = tracePool(pool, worldPosition, t);
-    vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz))
+    vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz),
+                                                  texture(caustics, causticsUv(pool, hit.position.xz)).r)
                               : poolWallRadiance(pool, frame, hit.normal);
     float distance = hit.distance;
     for (uint i = 0u; i < objects.count.x; ++i) {  // a sphere in front of the pool's surfaces

@@ -117,14 +117,15 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return n;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "readback hdr"}));
+  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water", "readback hdr"}));
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both), (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "tonemap",
-                                                   "readback hdr", "readback ldr"}));
+  EXPECT_EQ(names(both), (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water",
+                                                   "tonemap", "readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
   EXPECT_EQ(names(ldrOnly),
-            (std::vector<std::string>{"sky", "background", "ground", "pool", "spheres", "simulate", "water", "tonemap", "readback ldr"}));
+            (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water", "tonemap",
+                                      "readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
   for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
@@ -176,6 +177,9 @@ scene::Scene flatWaterFromAbove() {
   s.water.drops.clear();
   s.terrain.amplitude = 0.0f;
   s.spheres.clear();
+  // The CPU's answer lights the floor as through flat water everywhere; the
+  // caustics pass also shades the strip the walls shadow (tested on its own).
+  s.render.caustics = false;
   return s;
 }
 
@@ -553,6 +557,46 @@ TEST_F(WaterRenderTest, MovingSphereStirsCalmWater) {
   EXPECT_NE(b0.rgba, b12.rgba);
   render::Renderer again(ctx(), moving, 96, 64);
   EXPECT_EQ(again.render({.frame = 12}).rgba, b12.rgba);  // deterministic, with the moves between steps
+}
+
+// Caustics: under flat water with the sun overhead every patch of the surface
+// sends the sun to a patch of the same area, so the floor is lit exactly as
+// without caustics; under waves the light gathers and spreads, and the water
+// neither makes nor loses light on average (the ratios' mean stays near 1).
+TEST_F(WaterRenderTest, CausticsAreUniformUnderFlatWaterAndConserveLightUnderWaves) {
+  scene::Scene s = flatWaterFromAbove();
+  s.sky.sunElevationDegrees = 90.0f;
+  s.sky.zenith = s.sky.horizon = s.sky.glow = glm::vec3(0.0f);  // the floor lit by the sun alone
+  auto ratios = [&](const scene::Scene& scene, uint32_t frame) {
+    scene::Scene on = scene, off = scene;
+    on.render.caustics = true;
+    off.render.caustics = false;
+    render::Renderer ra(ctx(), on, kWidth, kHeight), rb(ctx(), off, kWidth, kHeight);
+    const auto a = ra.render({.frame = frame, .hdr = true}), b = rb.render({.frame = frame, .hdr = true});
+    std::vector<float> r;
+    // The middle of the image: the floor through the water, clear of the walls.
+    for (uint32_t y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
+      for (uint32_t x = kWidth / 4; x < 3 * kWidth / 4; ++x) r.push_back(pixel(a, x, y).g / pixel(b, x, y).g);
+    }
+    return r;
+  };
+  for (float r : ratios(s, 0)) ASSERT_NEAR(r, 1.0f, 1e-3f);
+
+  scene::Scene waves = s;
+  waves.water.drops = scene::defaultScene().water.drops;
+  for (auto& d : waves.water.drops) {
+    d.x = 0.3f + 0.5f * d.x;  // under the camera
+    d.z = 0.2f + 0.5f * d.z;
+  }
+  const auto r = ratios(waves, 10);
+  double mean = 0.0;
+  for (float v : r) mean += v;
+  mean /= double(r.size());
+  const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+  std::printf("caustic ratio under waves: mean %.4f, min %.3f, max %.3f\n", mean, *lo, *hi);
+  EXPECT_GT(*hi, 1.3f);
+  EXPECT_LT(*lo, 0.8f);
+  EXPECT_NEAR(mean, 1.0, 0.02);  // measured 0.9994 on lavapipe
 }
 
 }  // namespace tp::test

@@ -48,13 +48,15 @@ TP_INLINE float filteredChecker(vec2 p, vec2 w) {
 }
 
 // Radiance leaving the checkered ground at world xz (pixel footprint in
-// metres) with normal n, lit by the sun and by the sky's irradiance on an
+// metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
+// the caustics under water, 1 in the open) and by the sky's irradiance on an
 // up-facing surface.
-TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n) {
+TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
   vec2 p = xz / ground.plane.z;
   float odd = filteredChecker(p, footprint / ground.plane.z);
   vec3 albedo = mix(vec3(ground.albedoA), vec3(ground.albedoB), odd);
-  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + vec3(frame.skyIrradiance);
+  vec3 irradiance =
+      sunScale * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + vec3(frame.skyIrradiance);
   return albedo / kPi * irradiance;
 }
 
@@ -70,9 +72,15 @@ TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
   return normalize(vec3(-dx, 2.0f * spacing, -dz));
 }
 
-TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
-  return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal);
+// `caustic`: the sun's irradiance through the waves relative to the open sky
+// (the caustics texture; 1 where caustics are off).
+TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
+                                 float caustic) {
+  return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal, caustic);
 }
+
+// Where the caustics texture, which covers the pool's square, holds world xz.
+TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.box.x) + 0.5f; }
 
 // The walls see half the sky.
 TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {

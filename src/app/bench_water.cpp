@@ -144,7 +144,8 @@ int runBenchWater(const BenchWaterOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   std::vector<Resolution> resolutions;
   for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r));
-  const scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  base.render.caustics = false;  // the reference leaves them out
   if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");
 
   GpuSession session(false, o.device);

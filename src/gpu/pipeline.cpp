@@ -118,7 +118,13 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
       .depthTestEnable = desc.depthTest, .depthWriteEnable = desc.depthWrite, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   std::vector<vk::PipelineColorBlendAttachmentState> blends(
       desc.colorFormats.size(),
-      vk::PipelineColorBlendAttachmentState{.blendEnable = VK_FALSE,
+      vk::PipelineColorBlendAttachmentState{.blendEnable = desc.additive ? VK_TRUE : VK_FALSE,
+                                            .srcColorBlendFactor = vk::BlendFactor::eOne,
+                                            .dstColorBlendFactor = vk::BlendFactor::eOne,
+                                            .colorBlendOp = vk::BlendOp::eAdd,
+                                            .srcAlphaBlendFactor = vk::BlendFactor::eOne,
+                                            .dstAlphaBlendFactor = vk::BlendFactor::eOne,
+                                            .alphaBlendOp = vk::BlendOp::eAdd,
                                             .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
                                                               vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA});
   vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = uint32_t(blends.size()), .pAttachments = blends.data()};

@@ -65,9 +65,19 @@ struct GraphicsPipelineDesc {
   bool depthWrite = false;
   vk::PrimitiveTopology topology = vk::PrimitiveTopology::eTriangleList;
   vk::CullModeFlags cullMode = vk::CullModeFlagBits::eNone;
+  bool additive = false;  // blend: destination + source (accumulating targets)
 };
 
 Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
+
+// Whether the pipeline's shaders declare descriptor `binding` (passes that
+// share a draw between pipelines write only what each one reads).
+inline bool hasBinding(const Pipeline& p, uint32_t binding) {
+  for (const auto& b : p.bindings) {
+    if (b.binding == binding) return true;
+  }
+  return false;
+}
 
 // Binds the pipeline and pushes its constants (if any).
 template <typename Push>

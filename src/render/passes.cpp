@@ -48,7 +48,10 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms).bind(cmd, walls, arena);
   cmd.draw(kWallVertices, 1, 0, 0);
   gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
-  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms).bind(cmd, floor, arena);
+  gpu::DescriptorWrites writes;
+  writes.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
+  if (gpu::hasBinding(floor, 2)) writes.sampledImage(2, *pool.caustics, pool.causticsSampler);  // not the AOV pass
+  writes.bind(cmd, floor, arena);
   cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
   cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
 }
@@ -95,7 +98,7 @@ PoolPass::PoolPass(const gpu::Context& ctx)
 
 void PoolPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
                        const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const {
-  graph.pass("pool", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
+  graph.pass("pool", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}, {pool.causticsRef, Use::FragmentSample}},
              [this, &color, &depth, &frameUniforms, pool](PassContext& pc) {
                drawOver(pc.cmd, color, depth, [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool); });
              });
@@ -189,6 +192,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
       {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
   if (underwater) uses.push_back({underwater->ref, Use::FragmentSample});
+  else uses.push_back({pool.causticsRef, Use::FragmentSample});  // the floor the refracted rays meet
   graph.pass("water", std::move(uses),
              [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
@@ -200,10 +204,44 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
           .storageBuffer(2, water.state())
           .uniformBuffer(3, *pool.uniforms)
           .uniformBuffer(4, *pool.objects);
-      if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
+      if (underwater) {
+        writes.sampledImage(5, *underwater->image, underwater->sampler);
+      } else {
+        writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
+      }
       writes.bind(cmd, pipeline, pc.descriptors);
       drawWater(cmd, water);
     });
+  });
+}
+
+CausticsPass::CausticsPass(const gpu::Context& ctx)
+    : pipeline(gpu::createGraphicsPipeline(ctx, {.vertexShader = "caustics.vert",
+                                                 .fragmentShader = "caustics.frag",
+                                                 .pushSize = sizeof(shader::WaterSurfaceParams),
+                                                 .colorFormats = {kCausticsFormat},
+                                                 .additive = true})) {}
+
+void CausticsPass::declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool,
+                           const gpu::Buffer& frameUniforms) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{{pool.causticsRef, Use::ColorWrite}};
+  for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
+  graph.pass("caustics", std::move(uses), [this, water, pool, &frameUniforms](PassContext& pc) {
+    const auto& cmd = pc.cmd;
+    const gpu::Image& target = *pool.caustics;
+    auto colorTarget = attachment(target, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                                  vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
+    cmd.beginRendering(vk::RenderingInfo{
+        .renderArea = {{0, 0}, target.extent}, .layerCount = 1, .colorAttachmentCount = 1, .pColorAttachments = &colorTarget});
+    setViewport(cmd, target.extent);
+    gpu::bindPipeline(cmd, pipeline, water.params);
+    gpu::DescriptorWrites()
+        .uniformBuffer(0, frameUniforms)
+        .storageBuffer(2, water.state())
+        .uniformBuffer(3, *pool.uniforms)
+        .bind(cmd, pipeline, pc.descriptors);
+    drawWater(cmd, water);
+    cmd.endRendering();
   });
 }
 

@@ -21,6 +21,8 @@ constexpr vk::Format kLdrFormat = vk::Format::eR8G8B8A8Unorm;
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 constexpr vk::Format kSkyFormat = vk::Format::eR16G16B16A16Sfloat;
 constexpr vk::Format kAovFormat = vk::Format::eR32G32B32A32Sfloat;
+constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
+constexpr uint32_t kCausticsSize = 512;  // texels per side of the caustics texture over the pool
 
 // Compute: the procedural sky into an equirectangular HDR texture.
 struct SkyPass {
@@ -52,6 +54,11 @@ struct PoolDraw {
   const gpu::Buffer* floorIndices = nullptr;
   uint32_t floorIndexCount = 0;
   uint32_t floorGrid = 0;  // vertices per side
+  // The sun through the waves on the floor (the caustics pass's target, or
+  // one texel of 1 when the scene has caustics off), sampled linearly.
+  ResourceRef causticsRef;
+  const gpu::Image* caustics = nullptr;
+  vk::Sampler causticsSampler;
 };
 
 // Graphics: the pool's inner walls and its terrain floor.
@@ -98,6 +105,14 @@ struct WaterSurfacePass {
                const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool, ResourceRef skyRef,
                const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms,
                std::optional<Underwater> underwater) const;
+  gpu::Pipeline pipeline;
+};
+
+// Graphics: the caustics texture, accumulated from the water grid refracting
+// the sun onto the floor's mean plane (shaders_glsl/caustics.vert).
+struct CausticsPass {
+  explicit CausticsPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool, const gpu::Buffer& frameUniforms) const;
   gpu::Pipeline pipeline;
 };
 

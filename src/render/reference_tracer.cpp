@@ -111,7 +111,7 @@ class Tracer {
       case Material::Ground: {
         const glm::vec3 n(0.0f, 1.0f, 0.0f);
         if (first) *first = {p, n};
-        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n);
+        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, 1.0f);
       }
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
@@ -121,7 +121,7 @@ class Tracer {
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
         if (first) *first = {p, n};
-        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f));
+        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), 1.0f);
       }
       case Material::Water:
         return transmittance * water(p, dir, hit, specular, first);

@@ -33,6 +33,11 @@ struct Renderer::Resources {
                                                            .addressModeU = vk::SamplerAddressMode::eClampToEdge,
                                                            .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                            .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+        clampSampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
+                                                         .minFilter = vk::Filter::eLinear,
+                                                         .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                         .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                         .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
         color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
@@ -79,9 +84,17 @@ struct Renderer::Resources {
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
 
     const shader::GroundParams ground = groundParams(scene);
-    if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
-    backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
-    groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    std::optional<WaterDraw> waterDraw;
+    if (water) {
+      waterDraw = WaterDraw{{graph.buffer("water state 0", water->buffer(0)), graph.buffer("water state 1", water->buffer(1))},
+                            [this]() -> const gpu::Buffer& { return water->current(); },
+                            &indices,
+                            indexCount,
+                            waterSurfaceParams(scene)};
+      graph.pass("simulate",
+                 {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
+                 [this, scene](PassContext& pc) { recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps); });
+    }
     std::optional<PoolDraw> poolDraw;
     if (hasPool(scene)) {
       const shader::PoolParams pool = poolParams(scene);
@@ -93,7 +106,25 @@ struct Renderer::Resources {
       // Filled by render(): the spheres may move from frame to frame.
       objectUniforms = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
                                          gpu::MemoryUse::Upload, "scene objects");
-      poolDraw = PoolDraw{&poolUniforms, &objectUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid};
+      poolDraw = PoolDraw{&poolUniforms, &objectUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid,
+                          {}, &causticsImage, *clampSampler};
+      if (scene.render.caustics) {
+        causticsImage = gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
+                                           vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
+                                           "caustics");
+        poolDraw->causticsRef = graph.image("caustics", causticsImage);
+        causticsPass.emplace(ctx);
+        causticsPass->declare(graph, *waterDraw, *poolDraw, uniforms);
+      } else {
+        // The floor lit as through flat water: one texel of 1, uploaded once.
+        causticsImage = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
+        poolDraw->causticsRef = graph.image("caustics", causticsImage, vk::ImageLayout::eShaderReadOnlyOptimal);
+      }
+    }
+    if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
+    backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
+    groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    if (poolDraw) {
       poolPass.emplace(ctx);
       poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
     }
@@ -102,16 +133,7 @@ struct Renderer::Resources {
       spherePass.emplace(ctx);
       spherePass->declare(graph, colorRef, color, depthRef, depth, uniforms, &spheres);
     }
-    std::optional<WaterDraw> waterDraw;
     if (water) {
-      waterDraw = WaterDraw{{graph.buffer("water state 0", water->buffer(0)), graph.buffer("water state 1", water->buffer(1))},
-                            [this]() -> const gpu::Buffer& { return water->current(); },
-                            &indices,
-                            indexCount,
-                            waterSurfaceParams(scene)};
-      graph.pass("simulate",
-                 {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
-                 [this, scene](PassContext& pc) { recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps); });
       std::optional<Underwater> underwater;
       if (scene.render.refraction == "apparent") {
         underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
@@ -154,7 +176,7 @@ struct Renderer::Resources {
   BackgroundPass backgroundPass;
   GroundPass groundPass;
   TonemapPass tonemapPass;
-  vk::raii::Sampler sampler, nearestSampler;
+  vk::raii::Sampler sampler, nearestSampler, clampSampler;
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
@@ -167,6 +189,8 @@ struct Renderer::Resources {
   // The pool, when there is water to hold.
   std::optional<PoolPass> poolPass;
   gpu::Buffer poolUniforms, objectUniforms, floorIndices;
+  std::optional<CausticsPass> causticsPass;
+  gpu::Image causticsImage;  // the caustics pass's target, or one texel of 1 without caustics
   std::optional<SpherePass> spherePass;
   std::vector<shader::SphereParams> spheres;  // where the spheres are in the frame being recorded
   // Arbitrary output variables, when the renderer was made with them.

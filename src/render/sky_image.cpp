@@ -62,7 +62,7 @@ glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d) {
   return glm::mix(glm::mix(texel(i, j), texel(i + 1, j), fx), glm::mix(texel(i, j + 1), texel(i + 1, j + 1), fx), fy);
 }
 
-gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image) {
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name) {
   // Half floats: linear filtering of them is required of every device.
   std::vector<uint16_t> halves(image.texels.size() * 4);
   for (size_t k = 0; k < image.texels.size(); ++k) {
@@ -70,7 +70,7 @@ gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image) {
   }
   gpu::Image texture = gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat,
                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                                          "sky image texture");
+                                          name);
   gpu::Buffer staging = gpu::createBuffer(ctx, halves.size() * sizeof(uint16_t), vk::BufferUsageFlagBits::eTransferSrc,
                                           gpu::MemoryUse::Upload, "sky image staging");
   std::memcpy(staging.mapped, halves.data(), halves.size() * sizeof(uint16_t));

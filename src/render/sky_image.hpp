@@ -29,6 +29,6 @@ SkyLight skyImageLight(const SkyImage& image);
 glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d);
 
 // A half-float sampled texture holding the image, left in the shader-read layout.
-gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image);
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name = "sky image texture");
 
 }  // namespace tp::render

@@ -109,6 +109,10 @@ struct Render {
   // against the pool and spheres; "apparent" is the original's approximation,
   // reading the frame's own image of the pool at the refracted ray's mean-depth point.
   std::string refraction = "accurate";
+  // The sun's light focused and spread by the waves on the pool floor (a
+  // caustics pass); off, the floor is lit as through flat water, as the
+  // reference (render --reference) lights it.
+  bool caustics = true;
   bool operator==(const Render&) const = default;
 };
 

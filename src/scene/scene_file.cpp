@@ -196,6 +196,7 @@ Scene parseScene(const std::string& text, const std::string& origin) {
   top.object("render", [&](ObjectReader& r) {
     r.number("exposure", s.render.exposure);
     r.text("refraction", s.render.refraction);
+    r.flag("caustics", s.render.caustics);
   });
   top.finish();
   if (!s.sky.image.empty() && std::filesystem::path(s.sky.image).is_relative()) {
