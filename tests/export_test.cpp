@@ -118,9 +118,6 @@ TEST(ExportCli, BadOutputsFailCleanly) {
             std::string::npos);
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 
 // A sphere moving down into calm water along its path pushes out exactly the
 // volume it comes to occupy below the rest level (as the grid samples it), and

@@ -10,6 +10,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "gpu_test.hpp"
+#include "io/image_io.hpp"
+#include "process.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/renderer.hpp"
 #include "render/sky_model.hpp"
@@ -156,9 +158,6 @@ TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
   }
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 namespace {
 
 glm::vec3 refractGlsl(glm::vec3 i, glm::vec3 n, float eta) {
@@ -266,9 +265,6 @@ TEST_F(WaterRenderTest, FramesAreDeterministicAndTheWaterMoves) {
   EXPECT_EQ(c.render({.frame = 0}).rgba, c.render({.frame = 12}).rgba);  // nothing disturbs flat water
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 
 using AovTest = GpuTest;
 
@@ -364,9 +360,6 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
   EXPECT_TRUE(plain.position.empty());
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 namespace {
 
 // Distance to the sphere along a unit ray, or -1; `margin` reports how close
@@ -434,12 +427,6 @@ TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
   EXPECT_GT(notReflecting, 2000);
 }
 
-}  // namespace tp::test
-
-#include "io/image_io.hpp"
-#include "process.hpp"
-
-namespace tp::test {
 
 using SkyImageTest = GpuTest;
 
@@ -497,9 +484,6 @@ TEST(SkyImageCli, MissingOrUnfitSkyImagesFailCleanly) {
             std::string::npos);
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 
 // The apparent-depth mode is exact where its assumption holds (flat water over
 // a flat floor at the mean depth: the refracted ray's mean-depth point is its
@@ -541,9 +525,6 @@ TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
   EXPECT_FALSE(std::any_of(ga.passes.begin(), ga.passes.end(), [](const auto& p) { return p.name == "underwater"; }));
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 
 // A sphere on a path stirs calm water; the same sphere held still does not.
 TEST_F(WaterRenderTest, MovingSphereStirsCalmWater) {

@@ -94,9 +94,6 @@ TEST(SimCli, BlowUpStopsWithAnErrorAndNoFile) {
             std::string::npos);
 }
 
-}  // namespace tp::test
-
-namespace tp::test {
 
 // The benchmark runs end to end and writes its CSV (its figures are not
 // asserted: speed is a benchmark's business, not a test's).
