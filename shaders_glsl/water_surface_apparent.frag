@@ -15,11 +15,8 @@ void main() {
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
   if (dot(t, t) > 0.0 && t.y < 0.0) {
-    const float meanFloor = pool.box.y - pool.box.z;
-    const float distance = max(worldPosition.y - meanFloor, 0.0) / -t.y;
-    const vec4 clip = frame.viewProjection * vec4(worldPosition + distance * t, 1.0);
-    const vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
-    const ivec2 texel = clamp(ivec2(pixel), ivec2(0), ivec2(frame.viewport.xy) - 1);
+    const ivec2 texel = ivec2(apparentDepthTexel(pool, frame, worldPosition, t));
+    const float distance = apparentDepthDistance(pool, worldPosition, t);
     transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.absorption.rgb * distance);
   }
   color = vec4(mix(transmitted, reflected, waterFresnel(view, n)), 1.0);

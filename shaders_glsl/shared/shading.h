@@ -137,6 +137,25 @@ TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
   return poolHit(sWall, wallPoint, normal, false);
 }
 
+// Where world point p lands on the screen, in pixels from the top-left corner.
+TP_INLINE vec2 screenPixel(FrameUniforms frame, vec3 p) {
+  vec4 clip = frame.viewProjection * vec4(p, 1.0f);
+  return (vec2(clip.x, clip.y) / clip.w * 0.5f + 0.5f) * vec2(frame.viewport.x, frame.viewport.y);
+}
+
+// The apparent-depth mode's guess (the original course project's): the
+// refracted ray t from surface point p followed down to the pool's mean floor
+// depth only. Its length:
+TP_INLINE float apparentDepthDistance(PoolParams pool, vec3 p, vec3 t) {
+  return max(p.y - (pool.box.y - pool.box.z), 0.0f) / -t.y;
+}
+
+// ... and the texel of the frame's own image it reads there (integer-valued).
+TP_INLINE vec2 apparentDepthTexel(PoolParams pool, FrameUniforms frame, vec3 p, vec3 t) {
+  vec2 pixel = screenPixel(frame, p + apparentDepthDistance(pool, p, t) * t);
+  return clamp(floor(pixel), vec2(0.0f), vec2(frame.viewport.x, frame.viewport.y) - 1.0f);
+}
+
 // Lambertian spheres: the sky's irradiance scaled for the part of the sky a
 // tilted surface sees (1/2 (1 + n.y)).
 TP_INLINE vec3 sphereRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {

@@ -82,11 +82,6 @@ Timing timeFrames(render::Renderer& renderer, uint32_t frame, uint32_t repeats, 
   return {median(water), median(underwater), median(total)};
 }
 
-glm::vec2 toPixel(const shader::FrameUniforms& u, glm::vec3 p) {
-  const glm::vec4 clip = u.viewProjection * glm::vec4(p, 1.0f);
-  return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(u.viewport);
-}
-
 struct FloorErrors {
   double accuratePx = 0.0, apparentPx = 0.0;
 };
@@ -95,19 +90,18 @@ struct FloorErrors {
 // refracted ray (the reference's BVH, from the raster's own surface point and
 // normal) meets it, in pixels on screen, averaged over the water's pixels.
 // Accurate: the shared cast (tracePool, then the spheres) the shader runs.
-// Apparent: the texel the shader reads, whose centre shows that point.
+// Apparent: the texel the shader reads (the shared apparentDepthTexel), whose
+// centre shows that point.
 FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov, const std::vector<uint8_t>& water,
                         const sim::WaterState& state, float time) {
   std::vector<scene::Mesh> below;
   for (auto& m : render::sceneMeshes(s, &state, time)) {
     if (m.name != "water" && m.name.rfind("sphere", 0) != 0) below.push_back(std::move(m));
   }
-  std::vector<glm::vec4> spheres;
-  for (const auto& sphere : s.spheres) spheres.push_back(glm::vec4(scene::sphereCenterAt(sphere, time), sphere.radius));
+  const std::vector<scene::Sphere> spheres = scene::sceneAt(s, time).spheres;
   const render::ReferenceScene exact(below, spheres);
   const shader::PoolParams pool = render::poolParams(s);
   const auto u = render::frameUniforms(s, aov.width, aov.height);
-  const float meanFloor = pool.box.y - pool.box.z;
   double accurate = 0.0, apparent = 0.0;
   size_t count = 0;
   for (size_t k = 0; k < water.size(); ++k) {
@@ -119,19 +113,17 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
     if (glm::dot(t, t) == 0.0f || t.y >= 0.0f) continue;
     const render::ReferenceHit truth = exact.intersect(p, t, 0.0f);
     if (!truth.hit()) continue;
-    const glm::vec2 truePixel = toPixel(u, p + truth.distance * t);
+    const glm::vec2 truePixel = shader::screenPixel(u, p + truth.distance * t);
 
     const shader::PoolHit cast = shader::tracePool(pool, p, t);
     float distance = cast.distance;
-    for (const glm::vec4& sphere : spheres) {
-      const float d = shader::raySphere(p, t, sphere);
+    for (const scene::Sphere& sphere : spheres) {
+      const float d = shader::raySphere(p, t, glm::vec4(sphere.center, sphere.radius));
       if (d > 0.0f && d < distance) distance = d;
     }
-    accurate += glm::length(toPixel(u, p + distance * t) - truePixel);
+    accurate += glm::length(shader::screenPixel(u, p + distance * t) - truePixel);
 
-    const float depth = std::max(p.y - meanFloor, 0.0f) / -t.y;
-    const glm::vec2 read = glm::clamp(glm::floor(toPixel(u, p + depth * t)), glm::vec2(0.0f), glm::vec2(u.viewport) - 1.0f);
-    apparent += glm::length(read + 0.5f - truePixel);
+    apparent += glm::length(shader::apparentDepthTexel(pool, u, p, t) + 0.5f - truePixel);
     ++count;
   }
   if (count == 0) return {std::nan(""), std::nan("")};

@@ -29,8 +29,9 @@ void check(RTCDevice device, const char* what) {
 
 }  // namespace
 
-ReferenceScene::ReferenceScene(const std::vector<scene::Mesh>& meshes, std::vector<glm::vec4> spheres)
-    : embree_(std::make_unique<Embree>()), spheres_(std::move(spheres)) {
+ReferenceScene::ReferenceScene(const std::vector<scene::Mesh>& meshes, const std::vector<scene::Sphere>& spheres)
+    : embree_(std::make_unique<Embree>()) {
+  for (const auto& s : spheres) spheres_.push_back(glm::vec4(s.center, s.radius));
   embree_->device = rtcNewDevice(nullptr);
   if (!embree_->device) throw std::runtime_error("Embree: cannot create a device");
   embree_->scene = rtcNewScene(embree_->device);

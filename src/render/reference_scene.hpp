@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scene/mesh.hpp"
+#include "scene/scene.hpp"
 
 namespace tp::render {
 
@@ -23,7 +24,7 @@ struct ReferenceHit {
 // The frame's triangles in an Embree 3 BVH, and its spheres cast exactly.
 class ReferenceScene {
  public:
-  ReferenceScene(const std::vector<scene::Mesh>& meshes, std::vector<glm::vec4> spheres);
+  ReferenceScene(const std::vector<scene::Mesh>& meshes, const std::vector<scene::Sphere>& spheres);
   ~ReferenceScene();
   ReferenceScene(const ReferenceScene&) = delete;
   ReferenceScene& operator=(const ReferenceScene&) = delete;

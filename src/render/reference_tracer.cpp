@@ -84,15 +84,10 @@ class Tracer {
       if (m == Material::Water) waterMesh_ = int(traced.size());
       traced.push_back(std::move(mesh));
     }
-    std::vector<glm::vec4> spheres;
-    for (const auto& s : scene.spheres) {
-      spheres.push_back(glm::vec4(scene::sphereCenterAt(s, time), s.radius));
-      sphereAlbedo_.push_back(s.albedo);
-    }
+    spheres_ = scene::sceneAt(scene, time).spheres;
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
-    bvh_ = std::make_unique<ReferenceScene>(traced, spheres);
+    bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
     tracedMeshes_ = std::move(traced);
-    spheres_ = std::move(spheres);
   }
 
   // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
@@ -102,9 +97,10 @@ class Tracer {
     const glm::vec3 p = origin + hit.distance * dir;
     const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * hit.distance) : glm::vec3(1.0f);
     if (hit.sphere >= 0) {
-      const glm::vec3 n = glm::normalize(p - glm::vec3(spheres_[size_t(hit.sphere)]));
+      const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
+      const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * shader::sphereRadiance(uniforms_, sphereAlbedo_[size_t(hit.sphere)], n);
+      return transmittance * shader::sphereRadiance(uniforms_, sphere.albedo, n);
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -181,8 +177,7 @@ class Tracer {
   std::vector<Material> materials_;
   int waterMesh_ = -1;
   std::vector<glm::vec3> waterNormals_;
-  std::vector<glm::vec4> spheres_;
-  std::vector<glm::vec3> sphereAlbedo_;
+  std::vector<scene::Sphere> spheres_;  // where they are at the frame's time
   std::unique_ptr<ReferenceScene> bvh_;
 };
 

@@ -235,12 +235,9 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }
   // Spheres with a path are where the path puts them at this frame's time.
   const float time = float(request.frame) * scene_.water.frameTime;
-  for (size_t i = 0; i < scene_.spheres.size(); ++i) {
-    res_->spheres[i].sphere = glm::vec4(scene::sphereCenterAt(scene_.spheres[i], time), scene_.spheres[i].radius);
-  }
+  const scene::Scene placed = scene::sceneAt(scene_, time);
+  for (size_t i = 0; i < placed.spheres.size(); ++i) res_->spheres[i] = sphereParams(placed.spheres[i]);
   if (res_->objectUniforms.mapped) {
-    scene::Scene placed = scene_;
-    for (auto& sphere : placed.spheres) sphere.center = scene::sphereCenterAt(sphere, time);
     const shader::SceneObjects objects = sceneObjects(placed);
     std::memcpy(res_->objectUniforms.mapped, &objects, sizeof(objects));
   }

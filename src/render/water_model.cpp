@@ -152,11 +152,8 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     }
     meshes.push_back(std::move(floor));
   }
-  for (size_t i = 0; i < scene.spheres.size(); ++i) {
-    scene::Sphere placed = scene.spheres[i];
-    placed.center = scene::sphereCenterAt(placed, time);
-    meshes.push_back(sphereMesh(placed, "sphere" + std::to_string(i)));
-  }
+  const scene::Scene placed = scene::sceneAt(scene, time);
+  for (size_t i = 0; i < placed.spheres.size(); ++i) meshes.push_back(sphereMesh(placed.spheres[i], "sphere" + std::to_string(i)));
   if (water) {
     const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
     const auto cells = sim::toCells(*water, scene.water.extent);

@@ -31,6 +31,12 @@ void requireRange(float value, float lo, float hi, const char* field) {
 
 Scene defaultScene() { return Scene{}; }
 
+Scene sceneAt(const Scene& scene, float t) {
+  Scene placed = scene;
+  for (Sphere& sphere : placed.spheres) sphere.center = sphereCenterAt(sphere, t);
+  return placed;
+}
+
 glm::vec3 sphereCenterAt(const Sphere& sphere, float t) {
   const auto& path = sphere.path;
   if (path.empty()) return sphere.center;

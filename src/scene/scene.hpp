@@ -131,6 +131,10 @@ struct Scene {
 // The built-in default scene, rendered when no --scene is given.
 Scene defaultScene();
 
+// The scene as it stands at time t (seconds from its start): every sphere
+// where its path puts it.
+Scene sceneAt(const Scene& scene, float t);
+
 // Throws with the field and the bound on the first impossible value.
 void validateScene(const Scene& scene);
 
