@@ -100,7 +100,7 @@ TEST(SimCli, BlowUpStopsWithAnErrorAndNoFile) {
 TEST(BenchCli, SimBenchmarkWritesItsTable) {
   ScratchDir dir;
   const std::string csv = dir.file("bench.csv");
-  ProcessResult r = runTidepool("bench sim --sizes 16,32 --min-time 0.01 --csv " + csv + " --plot ''", dir);
+  ProcessResult r = runTidepool("bench sim --validate --sizes 16,32 --min-time 0.01 --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::ifstream in(csv);
   std::string line;
@@ -115,7 +115,7 @@ TEST(BenchCli, SimBenchmarkWritesItsTable) {
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");
-  ProcessResult r = runTidepool("bench water --resolutions 48x32 --samples 2 --repeats 1 --frame 3 --csv " + csv +
+  ProcessResult r = runTidepool("bench water --validate --resolutions 48x32 --samples 2 --repeats 1 --frame 3 --csv " + csv +
                                     " --plot ''",
                                 dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -1,5 +1,7 @@
 #include "app/bench_command.hpp"
 
+#include "app/gpu_session.hpp"
+
 namespace tp::app {
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
@@ -13,7 +15,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   sim->add_option("--plot", o.sim.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")->capture_default_str()
       ->check(CLI::Range(0.01, 60.0));
-  sim->add_option("--device", o.sim.device, "Use the Vulkan device whose name contains NAME")->type_name("NAME");
+  addGpuOptions(sim, o.sim.validate, o.sim.device);
   CLI::App* water = bench->add_subcommand(
       "water", "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
   water->add_option("--scene", o.water.scenePath, "Scene file (JSON); default: the built-in scene")
@@ -31,7 +33,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       ->check(CLI::Range(1u, 1000u));
   water->add_option("--csv", o.water.csv, "CSV output")->type_name("PATH")->capture_default_str();
   water->add_option("--plot", o.water.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  water->add_option("--device", o.water.device, "Use the Vulkan device whose name contains NAME")->type_name("NAME");
+  addGpuOptions(water, o.water.validate, o.water.device);
   return bench;
 }
 

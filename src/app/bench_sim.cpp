@@ -65,7 +65,7 @@ class QuietReporter : public benchmark::BenchmarkReporter {
 
 int runBenchSim(const BenchSimOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
-  GpuSession session(false, o.device);
+  GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   for (unsigned n : o.sizes) {
     const vk::DeviceSize bytes = vk::DeviceSize(n) * n * sizeof(shader::WaterCell);
@@ -176,7 +176,7 @@ int runBenchSim(const BenchSimOptions& o) {
   csvFile.commit();
   std::printf("wrote %s\n", o.csv.c_str());
   if (!o.plot.empty()) plotCsv("plot_bench_sim.py", o.csv, o.plot);
-  return 0;
+  return session.finish();
 }
 
 }  // namespace tp::app

@@ -8,6 +8,7 @@ struct BenchSimOptions {
   std::vector<unsigned> sizes{256, 512, 1024, 2048};
   std::string csv = "bench_sim.csv";
   std::string plot = "bench_sim.png";
+  bool validate = false;  // timings under validation are not representative
   std::string device;
   double minTime = 0.5;  // seconds Google Benchmark spends on each case
 };

@@ -140,7 +140,7 @@ int runBenchWater(const BenchWaterOptions& o) {
   base.render.caustics = false;  // the reference leaves them out
   if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");
 
-  GpuSession session(false, o.device);
+  GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   const sim::WaterState state = render::simulateWater(ctx, base, o.frame);
   const float time = float(o.frame) * base.water.frameTime;

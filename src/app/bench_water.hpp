@@ -13,6 +13,7 @@ struct BenchWaterOptions {
   uint32_t repeats = 5;   // timed frames per case (the median is reported)
   std::string csv = "bench_water.csv";
   std::string plot = "bench_water.png";
+  bool validate = false;  // timings under validation are not representative
   std::string device;
 };
 
