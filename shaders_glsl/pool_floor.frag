@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The tiled pool floor, Lambertian (shared/shading.h), the sun through the waves from the caustics texture.
+// The tiled pool floor, Lambertian (shared/shading.h), the sun through the
+// waves from the caustics texture, through the water when the camera is under it.
 #include "shared/shading.h"
 
 layout(location = 0) in vec3 worldPosition;
@@ -9,8 +10,10 @@ layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 2) uniform sampler2D caustics;
+layout(binding = 3) uniform Medium { CameraMedium medium; };
 
 void main() {
   const float caustic = texture(caustics, causticsUv(pool, worldPosition.xz)).r;
-  color = vec4(poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz), caustic), 1.0);
+  const vec3 radiance = poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz), caustic);
+  color = vec4(radiance * viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
 }

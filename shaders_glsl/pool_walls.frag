@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The pool's walls, Lambertian (shared/shading.h).
+// The pool's walls, Lambertian (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
 
 layout(location = 0) in vec3 worldPosition;
@@ -8,5 +8,9 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Pool { PoolParams pool; };
+layout(binding = 3) uniform Medium { CameraMedium medium; };
 
-void main() { color = vec4(poolWallRadiance(pool, frame, normalize(worldNormal)), 1.0); }
+void main() {
+  color = vec4(poolWallRadiance(pool, frame, normalize(worldNormal)) *
+                   viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+}

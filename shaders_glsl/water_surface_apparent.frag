@@ -4,6 +4,8 @@
 // approximation): the refracted ray is followed down to the pool's mean floor
 // depth only, that point is projected to the screen, and the frame's own image
 // of the pool under the water (copied before the water is drawn) is read there.
+// Seen from below, the surface is shaded as in the accurate mode: the
+// approximation is the original's view from above.
 #include "lib/water_shading.glsl"
 
 layout(binding = 5) uniform sampler2D underwater;
@@ -11,7 +13,11 @@ layout(binding = 5) uniform sampler2D underwater;
 void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 n = normalize(worldNormal);
-  const vec3 reflected = reflectedRadiance(worldPosition, reflect(view, n));
+  if (!gl_FrontFacing) {
+    color = shadeFromBelow(view, n);
+    return;
+  }
+  const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
   if (dot(t, t) > 0.0 && t.y < 0.0) {
@@ -19,5 +25,5 @@ void main() {
     const float distance = apparentDepthDistance(pool, worldPosition, t);
     transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.absorption.rgb * distance);
   }
-  color = vec4(mix(transmitted, reflected, waterFresnel(view, n)), 1.0);
+  color = vec4(mix(transmitted, reflected, waterFresnel(-dot(view, n))), 1.0);
 }

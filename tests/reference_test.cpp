@@ -76,21 +76,38 @@ TEST(ReferenceTest, FlatWaterReflectsTheSkyByFresnelsEquations) {
   EXPECT_GT(worstSchlick, 1e-3);
 }
 
-using ReferenceRasterTest = GpuTest;
+// Tonemapped RMSE (display units 0..1) of the supersampled raster against the
+// reference at 16 samples per pixel, over the frame or a mask of it. Measured
+// on lavapipe at 160x90: 0.0060 to 0.0095 in every test below (each prints
+// its figures), where the apparent-depth mode, light taking other paths, is
+// 0.035 over the frame and 0.097 on the water.
+constexpr double kRasterBound = 0.012;
+
+class ReferenceRasterTest : public GpuTest {
+ protected:
+  // The raster at 4x4 samples per pixel (rendered at 4x the size, box
+  // filtered), to meet the reference's 16 at silhouettes: what differs then
+  // is the light's paths, not the sampling.
+  std::vector<float> supersampledRaster(const scene::Scene& s, uint32_t frame, uint32_t width, uint32_t height) {
+    constexpr uint32_t factor = 4;
+    render::Renderer renderer(ctx(), s, width * factor, height * factor);
+    const auto raster = renderer.render({.frame = frame, .hdr = true});
+    return render::boxDownsample(raster.rgba, width * factor, height * factor, factor);
+  }
+};
 
 TEST_F(ReferenceRasterTest, WithoutWaterRasterAndReferenceAgree) {
   scene::Scene s = scene::defaultScene();
   s.water.enabled = false;
   constexpr uint32_t width = 160, height = 90;
-  render::Renderer renderer(ctx(), s, width, height);
-  const auto raster = renderer.render({.hdr = true});
+  const auto raster = supersampledRaster(s, 0, width, height);
   const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 16});
-  const auto e = render::tonemappedError(raster.rgba, reference.rgba, s.render.exposure);
+  const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure);
   std::printf("no water, 160x90: tonemapped RMSE %.4f, max %.4f\n", e.rmse, e.maxError);
-  // Measured 0.0186 on lavapipe: what is left is the raster's one sample per
-  // pixel at silhouettes and the horizon (the reference box-filters 16). A
-  // camera off by one pixel, or shading that differs, is several times more.
-  EXPECT_LT(e.rmse, 0.025);
+  // What is left is the two filters' different samples at silhouettes and the
+  // horizon. A camera off by one pixel, or shading that differs, is several
+  // times more.
+  EXPECT_LT(e.rmse, kRasterBound);
 }
 
 TEST_F(ReferenceRasterTest, AccurateRefractionIsCloserToTheReferenceThanApparentDepth) {
@@ -99,25 +116,103 @@ TEST_F(ReferenceRasterTest, AccurateRefractionIsCloserToTheReferenceThanApparent
   constexpr uint32_t width = 160, height = 90, frameNumber = 10;
   const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
-  render::Renderer accurate(ctx(), s, width, height, {.aovs = true});
-  const auto a = accurate.render({.frame = frameNumber, .hdr = true, .aovs = true});
+  render::Renderer aovRenderer(ctx(), s, width, height, {.aovs = true});
+  const std::vector<uint8_t> waterMask =
+      render::waterPixelMask(aovRenderer.render({.frame = frameNumber, .hdr = false, .aovs = true}), s.water);
+  const auto a = supersampledRaster(s, frameNumber, width, height);
   s.render.refraction = "apparent";
-  render::Renderer apparent(ctx(), s, width, height);
-  const auto b = apparent.render({.frame = frameNumber, .hdr = true});
-  const std::vector<uint8_t> waterMask = render::waterPixelMask(a, s.water);
-  const auto ea = render::tonemappedError(a.rgba, reference.rgba, s.render.exposure);
-  const auto eb = render::tonemappedError(b.rgba, reference.rgba, s.render.exposure);
-  const auto wa = render::tonemappedError(a.rgba, reference.rgba, s.render.exposure, waterMask);
-  const auto wb = render::tonemappedError(b.rgba, reference.rgba, s.render.exposure, waterMask);
+  const auto b = supersampledRaster(s, frameNumber, width, height);
+  const auto ea = render::tonemappedError(a, reference.rgba, s.render.exposure);
+  const auto eb = render::tonemappedError(b, reference.rgba, s.render.exposure);
+  const auto wa = render::tonemappedError(a, reference.rgba, s.render.exposure, waterMask);
+  const auto wb = render::tonemappedError(b, reference.rgba, s.render.exposure, waterMask);
   std::printf("frame 10, 160x90: accurate RMSE %.4f max %.4f (water %.4f over %zu px); apparent RMSE %.4f max %.4f (water %.4f)\n",
               ea.rmse, ea.maxError, wa.rmse, wa.pixels, eb.rmse, eb.maxError, wb.rmse);
   ASSERT_GT(wa.pixels, size_t(width * height / 10));
-  // Measured on lavapipe: 0.020 over the frame, 0.018 on the water, where
-  // apparent depth is 0.098: the accurate mode must stay within the first two
-  // and at least twice as close as the approximation.
-  EXPECT_LT(ea.rmse, 0.025);
-  EXPECT_LT(wa.rmse, 0.025);
+  // The accurate mode within the bound over the frame and on the water, and
+  // at least twice as close as the approximation there.
+  EXPECT_LT(ea.rmse, kRasterBound);
+  EXPECT_LT(wa.rmse, kRasterBound);
   EXPECT_GT(wb.rmse, 2.0 * wa.rmse);
+}
+
+// Boxes above the water, through it and piercing it, turned by their yaw:
+// drawn, reflected and refracted (castObjects) as the reference's triangles show them.
+TEST_F(ReferenceRasterTest, BoxesMatchTheReferenceAboveAndThroughTheWater) {
+  scene::Scene s = scene::defaultScene();
+  s.render.caustics = false;
+  s.camera.position = {2.0f, 1.3f, 2.8f};
+  s.camera.target = {-0.2f, -0.5f, -0.4f};
+  s.boxes = {{{-0.8f, -0.85f, 0.5f}, {0.7f, 0.5f, 0.5f}, 35.0f, {0.2f, 0.6f, 0.3f}},
+             {{0.1f, -0.3f, -1.1f}, {0.9f, 0.7f, 0.35f}, -20.0f, {0.8f, 0.7f, 0.2f}},
+             {{-1.3f, 0.25f, -2.4f}, {0.5f, 0.5f, 0.5f}, 0.0f, {0.5f, 0.5f, 0.55f}}};
+  constexpr uint32_t width = 160, height = 90, frameNumber = 10;
+  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
+  const auto raster = supersampledRaster(s, frameNumber, width, height);
+  scene::Scene without = s;
+  without.boxes.clear();
+  const auto noBoxes = render::renderReference(without, &water, frameNumber, width, height, {.samples = 16});
+  // The pixels the boxes change, seen directly, reflected or refracted.
+  const auto shown = render::tonemapToSrgb8(reference.rgba, s.render.exposure);
+  const auto hidden = render::tonemapToSrgb8(noBoxes.rgba, s.render.exposure);
+  std::vector<uint8_t> boxPixels(size_t(width) * height, 0);
+  for (size_t p = 0; p < boxPixels.size(); ++p) {
+    for (int c = 0; c < 3; ++c) boxPixels[p] |= std::abs(int(shown[p * 4 + c]) - int(hidden[p * 4 + c])) > 8;
+  }
+  const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure);
+  const auto onBoxes = render::tonemappedError(raster, reference.rgba, s.render.exposure, boxPixels);
+  std::printf("boxes, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f; on the %zu pixels the boxes change %.4f\n", e.rmse,
+              e.maxError, onBoxes.pixels, onBoxes.rmse);
+  ASSERT_GT(onBoxes.pixels, size_t(width * height / 40));  // measured 515
+  EXPECT_LT(e.rmse, kRasterBound);
+  EXPECT_LT(onBoxes.rmse, kRasterBound);
+}
+
+TEST(CameraMedium, UnderTheSurfaceInsideThePoolOnly) {
+  scene::Scene s = scene::defaultScene();
+  const sim::WaterState flat = sim::flatState(s.water.grid);
+  auto under = [&](glm::vec3 camera) {
+    s.camera.position = camera;
+    s.camera.target = camera + glm::vec3(1.0f, 0.0f, 0.0f);
+    return render::cameraMedium(s, &flat).absorption.w > 0.0f;
+  };
+  EXPECT_TRUE(under({0.3f, s.water.level - 0.01f, -0.2f}));
+  EXPECT_FALSE(under({0.3f, s.water.level + 0.01f, -0.2f}));
+  EXPECT_FALSE(under({0.5f * s.water.extent + 0.01f, s.water.level - 0.5f, 0.0f}));  // outside the pool's square
+  EXPECT_TRUE(under({0.5f * s.water.extent - 0.01f, s.water.level - 0.5f, 0.0f}));   // beyond the last cell centre
+  EXPECT_FALSE(render::cameraMedium(s, nullptr).absorption.w > 0.0f);
+  // On a slope: the mesh's own triangle decides, not the rest level.
+  sim::WaterState tilted = flat;
+  for (uint32_t j = 0; j < tilted.n; ++j) {
+    for (uint32_t i = 0; i < tilted.n; ++i) tilted.u[size_t(j) * tilted.n + i] = 0.01f * float(i);
+  }
+  s.camera.position = {0.0f, s.water.level + 0.3f, 0.0f};  // x = 0: cell 64 of 128, u there is 0.635
+  s.camera.target = {1.0f, 0.0f, 0.0f};
+  EXPECT_TRUE(render::cameraMedium(s, &tilted).absorption.w > 0.0f);
+}
+
+// The camera under the surface: the pool, a box and the sphere seen through
+// the water around it, and the surface from below (refraction into the air,
+// total internal reflection past the critical angle), in both modes.
+TEST_F(ReferenceRasterTest, CameraUnderTheSurfaceMatchesTheReference) {
+  scene::Scene s = scene::defaultScene();
+  s.render.caustics = false;
+  s.camera.position = {-1.4f, -0.75f, 1.5f};
+  s.camera.target = {0.9f, -0.2f, -0.7f};
+  s.camera.fovYDegrees = 70.0f;
+  s.boxes = {{{-0.6f, -0.9f, -1.0f}, {0.6f, 0.6f, 0.6f}, 30.0f, {0.25f, 0.55f, 0.3f}}};
+  constexpr uint32_t width = 160, height = 90, frameNumber = 10;
+  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  ASSERT_GT(render::cameraMedium(s, &water).absorption.w, 0.0f);
+  const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
+  for (const char* mode : {"accurate", "apparent"}) {
+    s.render.refraction = mode;
+    const auto raster = supersampledRaster(s, frameNumber, width, height);
+    const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure);
+    std::printf("under water, %s, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f\n", mode, e.rmse, e.maxError);
+    EXPECT_LT(e.rmse, kRasterBound) << mode;
+  }
 }
 
 }  // namespace tp::test

@@ -119,14 +119,14 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return n;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water", "readback hdr"}));
+  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water", "readback hdr"}));
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both), (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water",
+  EXPECT_EQ(names(both), (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water",
                                                    "tonemap", "readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
   EXPECT_EQ(names(ldrOnly),
-            (std::vector<std::string>{"simulate", "caustics", "sky", "background", "ground", "pool", "spheres", "water", "tonemap",
+            (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water", "tonemap",
                                       "readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
@@ -137,7 +137,7 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   dry.water.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "background", "ground", "spheres", "readback hdr"}));
+            (std::vector<std::string>{"sky", "background", "ground", "objects", "readback hdr"}));
 }
 
 TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {

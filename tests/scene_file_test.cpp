@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "scene/scene_file.hpp"
 
 namespace tp::test {
@@ -64,9 +66,28 @@ TEST(SceneFile, DefaultJsonSpellsOutTheBuiltInScene) {
 }
 
 TEST(SceneFile, ExampleScenesLoad) {
-  for (const char* name : {"scenes/default.json", "scenes/low_sun.json"}) {
-    EXPECT_NO_THROW(scene::loadSceneFile(std::string(TIDEPOOL_SOURCE_DIR) + "/" + name)) << name;
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(TIDEPOOL_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    EXPECT_NO_THROW(scene::loadSceneFile(entry.path().string())) << entry.path();
+    ++count;
   }
+  EXPECT_GE(count, 4u);
+}
+
+TEST(SceneFile, Boxes) {
+  const auto s = scene::parseScene(
+      R"({"boxes": [{"center": [1, -0.5, 0], "size": [0.2, 0.4, 0.6], "yaw": 30, "albedo": [0.1, 0.2, 0.3]}, {}]})", "x");
+  ASSERT_EQ(s.boxes.size(), 2u);
+  EXPECT_EQ(s.boxes[0].center, glm::vec3(1.0f, -0.5f, 0.0f));
+  EXPECT_EQ(s.boxes[0].size, glm::vec3(0.2f, 0.4f, 0.6f));
+  EXPECT_EQ(s.boxes[0].yawDegrees, 30.0f);
+  EXPECT_EQ(s.boxes[0].albedo, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(s.boxes[1], scene::Box{});
+  EXPECT_EQ(errorOf(R"({"boxes": [{"sise": [1, 1, 1]}]})"), "shot.json: boxes[0].sise: is not a known key");
+  EXPECT_EQ(errorOf(R"({"boxes": {"size": [1, 1, 1]}})"), "shot.json: boxes: expected an array of objects");
+  EXPECT_NE(errorOf(R"({"boxes": [{"size": [1, 0, 1]}]})").find("shot.json: boxes[].size.y"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"boxes": [{}, {}, {}, {}, {}]})").find("shot.json: boxes: at most 4, got 5"), std::string::npos);
 }
 
 }  // namespace tp::test

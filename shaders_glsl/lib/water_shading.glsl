@@ -1,7 +1,8 @@
 // The water surface's shading shared by its two refraction modes: inputs,
-// bindings 0-4, the reflection (the reflected ray cast against the spheres
-// and the walls above the water, else the sky's equirectangular lookup) and
-// Schlick's Fresnel.
+// bindings 0-4 and 6, what a ray leaving the surface sees above it (the
+// spheres and boxes, the walls above the water, else the sky's
+// equirectangular lookup) and below it (the pool and the objects, cast
+// exactly, through the absorbing water), and Schlick's Fresnel.
 #ifndef TP_LIB_WATER_SHADING
 #define TP_LIB_WATER_SHADING
 #include "shared/shading.h"
@@ -15,13 +16,14 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform Objects { SceneObjects objects; };
+layout(binding = 6) uniform sampler2D caustics;
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
 
-// What a ray reflected off the surface at p (inside the pool, below the rim)
-// sees: a sphere, the part of a wall above the water, or the sky over the rim.
-vec3 reflectedRadiance(vec3 p, vec3 r) {
+// What a ray leaving the surface at p (inside the pool, below the rim) upwards
+// sees: an object, the part of a wall above the water, or the sky over the rim.
+vec3 radianceAbove(vec3 p, vec3 r) {
   float nearest = 1e30;
   vec3 radiance = sky(r);
   const float halfSize = pool.box.x, rim = pool.box.y;
@@ -32,22 +34,47 @@ vec3 reflectedRadiance(vec3 p, vec3 r) {
     nearest = sWall;
     radiance = poolWallRadiance(pool, frame, sx < sz ? vec3(-sign(r.x), 0.0, 0.0) : vec3(0.0, 0.0, -sign(r.z)));
   }
-  for (uint i = 0u; i < objects.count.x; ++i) {
-    const float s = raySphere(p, r, objects.spheres[i]);
-    if (s > 0.0 && s < nearest) {
-      nearest = s;
-      radiance = sphereRadiance(frame, objects.sphereAlbedo[i].rgb, normalize(p + s * r - objects.spheres[i].xyz));
-    }
-  }
-  return radiance;
+  const ObjectHit object = castObjects(objects, p, r, nearest);
+  return object.distance > 0.0 ? objectRadiance(frame, object.albedo, object.normal) : radiance;
 }
 
-// Schlick's Fresnel reflectance for the view ray meeting normal n.
-float waterFresnel(vec3 view, vec3 n) {
+// What a ray leaving the surface at p downwards sees: the pool (walls, and the
+// floor lit through the caustics) or an object in front of it, attenuated
+// along its path through the water.
+vec3 radianceBelow(vec3 p, vec3 t) {
+  const PoolHit hit = tracePool(pool, p, t);
+  vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz),
+                                                texture(caustics, causticsUv(pool, hit.position.xz)).r)
+                            : poolWallRadiance(pool, frame, hit.normal);
+  float distance = hit.distance;
+  const ObjectHit object = castObjects(objects, p, t, distance);
+  if (object.distance > 0.0) {
+    distance = object.distance;
+    radiance = objectRadiance(frame, object.albedo, object.normal);
+  }
+  return radiance * exp(-surface.absorption.rgb * distance);
+}
+
+// Schlick's Fresnel reflectance, from the cosine of the angle on the air side.
+float waterFresnel(float cosAir) {
   const float ior = surface.absorption.w;
   const float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
-  const float cosIn = clamp(-dot(view, n), 0.0, 1.0);
-  return f0 + (1.0 - f0) * pow(1.0 - cosIn, 5.0);
+  return f0 + (1.0 - f0) * pow(1.0 - clamp(cosAir, 0.0, 1.0), 5.0);
+}
+
+// The surface seen from under the water (the back of the mesh, whose front
+// faces the sky): reflected light from below, the refracted ray to the air
+// (none past the critical angle: total internal reflection), and the water
+// between the surface and the camera.
+vec4 shadeFromBelow(vec3 view, vec3 n) {
+  n = -n;  // towards the camera, into the water
+  const vec3 reflected = radianceBelow(worldPosition, reflect(view, n));
+  const vec3 t = refract(view, n, surface.absorption.w);
+  const bool total = dot(t, t) == 0.0;
+  const vec3 transmitted = total ? vec3(0.0) : radianceAbove(worldPosition, t);
+  const float fresnel = total ? 1.0 : waterFresnel(-dot(t, n));
+  const float toCamera = distance(frame.cameraPosition.xyz, worldPosition);
+  return vec4(mix(transmitted, reflected, fresnel) * exp(-surface.absorption.rgb * toCamera), 1.0);
 }
 
 #endif

@@ -1,17 +1,24 @@
-// The scene's objects seen by rays cast in shaders (the water's refracted
-// rays): spheres, a uniform buffer filled once per scene (render/objects_model.cpp).
+// The scene's objects (Lambertian spheres and boxes) as the shaders see them:
+// a uniform buffer filled once per frame (render/objects_model.cpp) for the
+// rays cast in shaders (the water's reflected and refracted rays), the push
+// constants of their draws, and the one cast against all of them, shared with
+// C++.
 #ifndef TP_SHARED_OBJECTS_H
 #define TP_SHARED_OBJECTS_H
 #include "shared/interop.h"
 
 #define TP_MAX_SPHERES 4
+#define TP_MAX_BOXES 4
 
 TP_BEGIN
 
 struct SceneObjects {
-  uvec4 count;                          // x: spheres
+  uvec4 count;                          // x: spheres, y: boxes
   vec4 spheres[TP_MAX_SPHERES];         // xyz centre, w radius
   vec4 sphereAlbedo[TP_MAX_SPHERES];    // rgb
+  vec4 boxCenter[TP_MAX_BOXES];         // xyz centre, w yaw (radians, about +y, from +x towards -z)
+  vec4 boxHalfSize[TP_MAX_BOXES];       // xyz half the edge lengths in the box's own frame
+  vec4 boxAlbedo[TP_MAX_BOXES];         // rgb
 };
 
 // Push constants of the sphere pass: one draw per sphere.
@@ -21,11 +28,97 @@ struct SphereParams {
   uvec4 tessellation;  // x: stacks, y: slices
 };
 
+// Push constants of the box pass: one draw per box.
+struct BoxParams {
+  vec4 center;    // xyz centre, w yaw (radians)
+  vec4 halfSize;  // xyz
+  vec4 albedo;    // rgb
+};
+
+// A box's frame: its local axes in world space (x and z turned by the yaw about y).
+TP_INLINE vec3 boxAxisX(float yaw) { return vec3(cos(yaw), 0.0f, -sin(yaw)); }
+TP_INLINE vec3 boxAxisZ(float yaw) { return vec3(sin(yaw), 0.0f, cos(yaw)); }
+
+// Distance along origin + s dir (dir unit) to the sphere's front surface, or -1.
+TP_INLINE float raySphere(vec3 origin, vec3 dir, vec4 sphere) {
+  vec3 oc = origin - vec3(sphere);
+  float b = dot(oc, dir);
+  float c = dot(oc, oc) - sphere.w * sphere.w;
+  float discriminant = b * b - c;
+  if (discriminant < 0.0f) return -1.0f;
+  float s = -b - sqrt(discriminant);
+  return s > 0.0f ? s : -1.0f;
+}
+
+// The slab test in the box's frame: x the distance to its front face (or -1
+// when missed or when the origin is inside), yzw the world normal there.
+TP_INLINE vec4 rayBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
+  vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
+  vec3 rel = origin - vec3(center);
+  vec3 o = vec3(dot(rel, ax), rel.y, dot(rel, az));
+  vec3 d = vec3(dot(dir, ax), dir.y, dot(dir, az));
+  float sNear = -1e30f, sFar = 1e30f;
+  int axis = -1;
+  float side = 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    if (abs(d[k]) < 1e-12f) {
+      if (abs(o[k]) > halfSize[k]) return vec4(-1.0f);
+      continue;
+    }
+    float a = (-halfSize[k] - o[k]) / d[k], b = (halfSize[k] - o[k]) / d[k];
+    float enter = min(a, b), leave = max(a, b);
+    if (enter > sNear) {
+      sNear = enter;
+      axis = k;
+      side = d[k] > 0.0f ? -1.0f : 1.0f;
+    }
+    sFar = min(sFar, leave);
+  }
+  if (axis < 0 || sNear > sFar || sNear <= 0.0f) return vec4(-1.0f);
+  vec3 n = axis == 0 ? side * ax : (axis == 1 ? vec3(0.0f, side, 0.0f) : side * az);
+  return vec4(sNear, n);
+}
+
+struct ObjectHit {
+  float distance;  // -1: none nearer than the limit
+  vec3 normal;     // unit, world
+  vec3 albedo;
+};
+
+// The nearest sphere or box along origin + s dir (dir unit) with s < limit.
+TP_INLINE ObjectHit castObjects(SceneObjects objects, vec3 origin, vec3 dir, float limit) {
+  ObjectHit hit;
+  hit.distance = -1.0f;
+  hit.normal = vec3(0.0f);
+  hit.albedo = vec3(0.0f);
+  float nearest = limit;
+  for (uint i = 0u; i < objects.count.x; ++i) {
+    float s = raySphere(origin, dir, objects.spheres[i]);
+    if (s > 0.0f && s < nearest) {
+      nearest = s;
+      hit.distance = s;
+      hit.normal = normalize(origin + s * dir - vec3(objects.spheres[i]));
+      hit.albedo = vec3(objects.sphereAlbedo[i]);
+    }
+  }
+  for (uint i = 0u; i < objects.count.y; ++i) {
+    vec4 b = rayBox(origin, dir, objects.boxCenter[i], objects.boxHalfSize[i]);
+    if (b.x > 0.0f && b.x < nearest) {
+      nearest = b.x;
+      hit.distance = b.x;
+      hit.normal = vec3(b.y, b.z, b.w);
+      hit.albedo = vec3(objects.boxAlbedo[i]);
+    }
+  }
+  return hit;
+}
+
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::SceneObjects) == 16 + 32 * TP_MAX_SPHERES);
+static_assert(sizeof(tp::shader::SceneObjects) == 16 + 32 * TP_MAX_SPHERES + 48 * TP_MAX_BOXES);
 static_assert(sizeof(tp::shader::SphereParams) == 48);
+static_assert(sizeof(tp::shader::BoxParams) == 48);
 #endif
 
 #endif

@@ -1,6 +1,6 @@
 // The local shading of every surface (Lambertian, lit by the sun without
 // shadows and by the sky's irradiance), the equirectangular mapping and the
-// casts of the water's refracted rays against the pool and the spheres,
+// cast of the water's refracted rays against the pool,
 // compiled both as GLSL and as C++: the raster passes and the CPU reference (render/reference_*) shade
 // with the same functions, so that their difference measures only the paths
 // the light takes.
@@ -10,6 +10,7 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/pool.h"
+#include "shared/water_surface.h"
 
 TP_BEGIN
 
@@ -156,23 +157,18 @@ TP_INLINE vec2 apparentDepthTexel(PoolParams pool, FrameUniforms frame, vec3 p, 
   return clamp(floor(pixel), vec2(0.0f), vec2(frame.viewport.x, frame.viewport.y) - 1.0f);
 }
 
-// Lambertian spheres: the sky's irradiance scaled for the part of the sky a
-// tilted surface sees (1/2 (1 + n.y)).
-TP_INLINE vec3 sphereRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {
+// What reaches the camera from p along the straight path through the medium
+// around it (the water when the camera is under the surface).
+TP_INLINE vec3 viewTransmittance(CameraMedium medium, vec3 camera, vec3 p) {
+  return exp(-vec3(medium.absorption) * distance(camera, p));
+}
+
+// Lambertian objects (spheres and boxes): the sky's irradiance scaled for the
+// part of the sky a tilted surface sees (1/2 (1 + n.y)).
+TP_INLINE vec3 objectRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
                     0.5f * (1.0f + n.y) * vec3(frame.skyIrradiance);
   return albedo / kPi * irradiance;
-}
-
-// Distance along origin + s dir (dir unit) to the sphere's front surface, or -1.
-TP_INLINE float raySphere(vec3 origin, vec3 dir, vec4 sphere) {
-  vec3 oc = origin - vec3(sphere);
-  float b = dot(oc, dir);
-  float c = dot(oc, oc) - sphere.w * sphere.w;
-  float discriminant = b * b - c;
-  if (discriminant < 0.0f) return -1.0f;
-  float s = -b - sqrt(discriminant);
-  return s > 0.0f ? s : -1.0f;
 }
 
 TP_END

@@ -12,10 +12,46 @@ struct WaterSurfaceParams {
   uvec4 grid;       // x: cells per side; yzw unused
 };
 
+// The medium around the camera, decided on the GPU where the water lives
+// (camera_medium.comp; render/water_model.cpp for the CPU reference) and read
+// by the passes that draw what the camera sees directly, through no surface.
+struct CameraMedium {
+  vec4 absorption;  // rgb: absorption coefficient in 1/m (the water's under the surface, 0 in air); w: 1 under water
+};
+
+// Where world xz falls on the surface mesh (vertex (i, j) at cell centre
+// ((i + 1/2) h, (j + 1/2) h)): xy the first vertex (i, j) of its quad, zw the
+// fraction inside it; clamped to the grid's vertices.
+TP_INLINE vec4 gridQuadAt(WaterSurfaceParams s, vec2 xz) {
+  float last = float(s.grid.x) - 1.0f;
+  vec2 g = clamp((xz - vec2(s.placement.x, s.placement.z)) / s.placement.w - 0.5f, vec2(0.0f), vec2(last));
+  vec2 i = min(floor(g), vec2(last - 1.0f));
+  return vec4(i.x, i.y, g.x - i.x, g.y - i.y);
+}
+
+// The mesh's height (above the rest level) inside one quad from its corners'
+// (x: u(i, j), y: u(i+1, j), z: u(i, j+1), w: u(i+1, j+1)), on the two
+// triangles water_model.cpp's waterGridIndices makes (diagonal from (i+1, j)
+// to (i, j+1)).
+TP_INLINE float gridQuadHeight(vec4 corners, vec2 f) {
+  if (f.x + f.y <= 1.0f) return corners.x + f.x * (corners.y - corners.x) + f.y * (corners.z - corners.x);
+  return corners.w + (1.0f - f.x) * (corners.z - corners.w) + (1.0f - f.y) * (corners.y - corners.w);
+}
+
+// Whether point p is in the water: over the water's square and below the mesh
+// (corners and fraction from gridQuadAt at p.xz).
+TP_INLINE bool underWaterSurface(WaterSurfaceParams s, vec3 p, vec4 corners, vec2 f) {
+  float size = float(s.grid.x) * s.placement.w;
+  vec2 local = vec2(p.x - s.placement.x, p.z - s.placement.z);
+  bool over = local.x > 0.0f && local.y > 0.0f && local.x < size && local.y < size;
+  return over && p.y < s.placement.y + gridQuadHeight(corners, f);
+}
+
 TP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(tp::shader::WaterSurfaceParams) == 48);
+static_assert(sizeof(tp::shader::CameraMedium) == 16);
 #endif
 
 #endif

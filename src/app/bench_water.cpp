@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/image_error.hpp"
+#include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 #include "render/reference_scene.hpp"
 #include "render/reference_tracer.hpp"
@@ -89,7 +90,7 @@ struct FloorErrors {
 // Where each mode reads what lies under the water, against where the exact
 // refracted ray (the reference's BVH, from the raster's own surface point and
 // normal) meets it, in pixels on screen, averaged over the water's pixels.
-// Accurate: the shared cast (tracePool, then the spheres) the shader runs.
+// Accurate: the shared casts (tracePool, then castObjects) the shader runs.
 // Apparent: the texel the shader reads (the shared apparentDepthTexel), whose
 // centre shows that point.
 FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov, const std::vector<uint8_t>& water,
@@ -98,8 +99,9 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
   for (auto& m : render::sceneMeshes(s, &state, time)) {
     if (m.name != "water" && m.name.rfind("sphere", 0) != 0) below.push_back(std::move(m));
   }
-  const std::vector<scene::Sphere> spheres = scene::sceneAt(s, time).spheres;
-  const render::ReferenceScene exact(below, spheres);
+  const scene::Scene placed = scene::sceneAt(s, time);
+  const render::ReferenceScene exact(below, placed.spheres);
+  const shader::SceneObjects objects = render::sceneObjects(placed);
   const shader::PoolParams pool = render::poolParams(s);
   const auto u = render::frameUniforms(s, aov.width, aov.height);
   double accurate = 0.0, apparent = 0.0;
@@ -116,11 +118,8 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
     const glm::vec2 truePixel = shader::screenPixel(u, p + truth.distance * t);
 
     const shader::PoolHit cast = shader::tracePool(pool, p, t);
-    float distance = cast.distance;
-    for (const scene::Sphere& sphere : spheres) {
-      const float d = shader::raySphere(p, t, glm::vec4(sphere.center, sphere.radius));
-      if (d > 0.0f && d < distance) distance = d;
-    }
+    const shader::ObjectHit object = shader::castObjects(objects, p, t, cast.distance);
+    const float distance = object.distance > 0.0f ? object.distance : cast.distance;
     accurate += glm::length(shader::screenPixel(u, p + distance * t) - truePixel);
 
     apparent += glm::length(shader::apparentDepthTexel(pool, u, p, t) + 0.5f - truePixel);

@@ -32,6 +32,7 @@ UseInfo info(Use use) {
     case Use::DepthReadWrite:
       return {{S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite},
               L::eDepthAttachmentOptimal, true, true};
+    case Use::FragmentUniformRead: return {{S::eFragmentShader, A::eUniformRead}, L::eGeneral, true, false};
     case Use::VertexStorageRead: return {{S::eVertexShader, A::eShaderStorageRead}, L::eGeneral, true, false};
     case Use::TransferRead: return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
     case Use::TransferWrite: return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, false, true};
@@ -117,7 +118,10 @@ void FrameGraph::barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarri
       } else {
         r.lastWrite = {u.access.stage, A::eNone};  // the transition, finished before this stage
       }
-      r.visible = u.reads ? u.access : gpu::access::none;
+      // A write in this pass is visible to no one yet, not even to a later
+      // pass of the same stage; a transition alone makes the last write
+      // visible to this use.
+      r.visible = u.writes ? gpu::access::none : u.access;
       r.readStages = u.reads ? u.access.stage : S::eNone;
     } else {
       // Read after write: make the write visible to this stage and access once.

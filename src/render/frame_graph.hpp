@@ -23,6 +23,7 @@ enum class Use {
   DepthWrite,        // depth attachment, cleared, tested and written
   DepthReadWrite,    // depth attachment, loaded, tested and written
   VertexStorageRead, // storage buffer read in the vertex stage
+  FragmentUniformRead,  // buffer read as a uniform buffer in the fragment stage
   TransferRead,      // source of a copy
   TransferWrite,     // destination of a copy
 };

@@ -18,6 +18,22 @@ std::vector<uint8_t> tonemapToSrgb8(std::span<const float> rgba, float exposure)
   return out;
 }
 
+std::vector<float> boxDownsample(std::span<const float> rgba, uint32_t width, uint32_t height, uint32_t factor) {
+  if (factor == 0 || width % factor || height % factor || rgba.size() != size_t(width) * height * 4) {
+    throw std::invalid_argument("boxDownsample: the size is not a multiple of the factor");
+  }
+  const uint32_t w = width / factor, h = height / factor;
+  std::vector<float> out(size_t(w) * h * 4, 0.0f);
+  const float weight = 1.0f / float(factor * factor);
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const size_t from = (size_t(y) * width + x) * 4, to = (size_t(y / factor) * w + x / factor) * 4;
+      for (int c = 0; c < 4; ++c) out[to + c] += weight * rgba[from + c];
+    }
+  }
+  return out;
+}
+
 ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
                            std::span<const uint8_t> mask) {
   if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("tonemappedError: images differ in size");

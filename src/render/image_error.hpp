@@ -24,6 +24,11 @@ struct ImageError {
 ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
                            std::span<const uint8_t> mask = {});
 
+// A linear RGBA image averaged over factor x factor blocks (width and height
+// multiples of factor): a raster rendered at factor times the resolution, so
+// filtered, meets the reference's many samples per pixel at its silhouettes.
+std::vector<float> boxDownsample(std::span<const float> rgba, uint32_t width, uint32_t height, uint32_t factor);
+
 // One byte per pixel, 1 where the frame's first surface (its position AOV) is
 // the water: inside the water's square, within 0.1 m of its rest level.
 std::vector<uint8_t> waterPixelMask(const RenderedFrame& aovs, const scene::Water& water);

@@ -6,12 +6,38 @@ namespace tp::render {
 
 shader::SceneObjects sceneObjects(const scene::Scene& scene) {
   shader::SceneObjects objects{};
-  objects.count = {uint32_t(scene.spheres.size()), 0u, 0u, 0u};
+  objects.count = {uint32_t(scene.spheres.size()), uint32_t(scene.boxes.size()), 0u, 0u};
   for (size_t i = 0; i < scene.spheres.size(); ++i) {
     objects.spheres[i] = glm::vec4(scene.spheres[i].center, scene.spheres[i].radius);
     objects.sphereAlbedo[i] = glm::vec4(scene.spheres[i].albedo, 0.0f);
   }
+  for (size_t i = 0; i < scene.boxes.size(); ++i) {
+    const shader::BoxParams box = boxParams(scene.boxes[i]);
+    objects.boxCenter[i] = box.center;
+    objects.boxHalfSize[i] = box.halfSize;
+    objects.boxAlbedo[i] = box.albedo;
+  }
   return objects;
+}
+
+shader::BoxParams boxParams(const scene::Box& box) {
+  return {glm::vec4(box.center, glm::radians(box.yawDegrees)), glm::vec4(0.5f * box.size, 0.0f),
+          glm::vec4(box.albedo, 0.0f)};
+}
+
+scene::Mesh boxMesh(const scene::Box& box, const std::string& name) {
+  const shader::BoxParams p = boxParams(box);
+  const glm::vec3 ax = shader::boxAxisX(p.center.w), ay(0.0f, 1.0f, 0.0f), az = shader::boxAxisZ(p.center.w);
+  scene::Mesh m{name, {}, {}};
+  for (int k = 0; k < 8; ++k) {  // corner k: bit 0 +x, bit 1 +y, bit 2 +z
+    const glm::vec3 s((k & 1) ? 1.0f : -1.0f, (k & 2) ? 1.0f : -1.0f, (k & 4) ? 1.0f : -1.0f);
+    const glm::vec3 local = s * glm::vec3(p.halfSize);
+    m.positions.push_back(glm::vec3(p.center) + local.x * ax + local.y * ay + local.z * az);
+  }
+  // Counter-clockwise seen from outside.
+  m.indices = {1, 3, 7, 1, 7, 5,  0, 4, 6, 0, 6, 2,  2, 6, 7, 2, 7, 3,
+               0, 1, 5, 0, 5, 4,  4, 5, 7, 4, 7, 6,  0, 2, 3, 0, 3, 1};
+  return m;
 }
 
 shader::SphereParams sphereParams(const scene::Sphere& sphere) {

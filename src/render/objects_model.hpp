@@ -9,11 +9,14 @@ namespace tp::render {
 inline constexpr uint32_t kSphereStacks = 32;
 inline constexpr uint32_t kSphereSlices = 64;
 inline constexpr uint32_t kSphereVertices = kSphereStacks * kSphereSlices * 6;
+inline constexpr uint32_t kBoxVertices = 36;  // box.vert: six faces of two triangles
 
 // The one place where the scene's objects become shader parameters.
 shader::SceneObjects sceneObjects(const scene::Scene& scene);
 shader::SphereParams sphereParams(const scene::Sphere& sphere);
-// The sphere as sphere.vert tessellates it.
+shader::BoxParams boxParams(const scene::Box& box);
+// The sphere as sphere.vert tessellates it, the box as box.vert draws it.
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name);
+scene::Mesh boxMesh(const scene::Box& box, const std::string& name);
 
 }  // namespace tp::render

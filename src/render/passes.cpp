@@ -1,6 +1,7 @@
 #include "render/passes.hpp"
 
 #include "gpu/descriptors.hpp"
+#include "render/objects_model.hpp"
 
 #include <array>
 #include <functional>
@@ -42,15 +43,20 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
 constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the pool's hole
 constexpr uint32_t kWallVertices = 24;    // pool_walls.vert: four quads
 
+// `medium`: none for the AOV pass, whose fragment shader reads neither it nor the caustics.
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
-              const gpu::Pipeline& floor, const gpu::Buffer& frameUniforms, const PoolDraw& pool) {
+              const gpu::Pipeline& floor, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
+              const gpu::Buffer* medium) {
   cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
-  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms).bind(cmd, walls, arena);
+  gpu::DescriptorWrites wallWrites;
+  wallWrites.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
+  if (medium) wallWrites.uniformBuffer(3, *medium);
+  wallWrites.bind(cmd, walls, arena);
   cmd.draw(kWallVertices, 1, 0, 0);
   gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
   gpu::DescriptorWrites writes;
   writes.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
-  if (gpu::hasBinding(floor, 2)) writes.sampledImage(2, *pool.caustics, pool.causticsSampler);  // not the AOV pass
+  if (medium) writes.sampledImage(2, *pool.caustics, pool.causticsSampler).uniformBuffer(3, *medium);
   writes.bind(cmd, floor, arena);
   cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
   cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
@@ -68,27 +74,49 @@ gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentS
 
 }  // namespace
 
-static void drawSpheres(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& pipeline,
-                 const gpu::Buffer& frameUniforms, const std::vector<shader::SphereParams>& spheres) {
-  if (spheres.empty()) return;
-  cmd.bindPipeline(pipeline.bindPoint, *pipeline.pipeline);
-  gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, pipeline, arena);
-  for (const auto& sphere : spheres) {
-    gpu::bindPipeline(cmd, pipeline, sphere);
-    cmd.draw(sphere.tessellation.x * sphere.tessellation.y * 6, 1, 0, 0);
+// `medium`: none for the AOV pass.
+static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& spheres,
+                        const gpu::Pipeline& boxes, const gpu::Buffer& frameUniforms, const gpu::Buffer* medium,
+                        const std::vector<shader::SphereParams>& sphereDraws,
+                        const std::vector<shader::BoxParams>& boxDraws) {
+  auto bindShared = [&](const gpu::Pipeline& pipeline) {
+    cmd.bindPipeline(pipeline.bindPoint, *pipeline.pipeline);
+    gpu::DescriptorWrites writes;
+    writes.uniformBuffer(0, frameUniforms);
+    if (medium) writes.uniformBuffer(1, *medium);
+    writes.bind(cmd, pipeline, arena);
+  };
+  if (!sphereDraws.empty()) {
+    bindShared(spheres);
+    for (const auto& sphere : sphereDraws) {
+      gpu::bindPipeline(cmd, spheres, sphere);
+      cmd.draw(sphere.tessellation.x * sphere.tessellation.y * 6, 1, 0, 0);
+    }
+  }
+  if (!boxDraws.empty()) {
+    bindShared(boxes);
+    for (const auto& box : boxDraws) {
+      gpu::bindPipeline(cmd, boxes, box);
+      cmd.draw(kBoxVertices, 1, 0, 0);
+    }
   }
 }
 
-SpherePass::SpherePass(const gpu::Context& ctx)
-    : pipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))) {}
+ObjectPass::ObjectPass(const gpu::Context& ctx)
+    : spherePipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))),
+      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams)))) {}
 
-void SpherePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                         const gpu::Image& depth, const gpu::Buffer& frameUniforms,
-                         const std::vector<shader::SphereParams>* spheres) const {
-  graph.pass("spheres", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}},
-             [this, &color, &depth, &frameUniforms, spheres](PassContext& pc) {
-               drawOver(pc.cmd, color, depth,
-                        [&] { drawSpheres(pc.cmd, pc.descriptors, pipeline, frameUniforms, *spheres); });
+void ObjectPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
+                         const gpu::Image& depth, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
+                         const std::vector<shader::SphereParams>* spheres,
+                         const std::vector<shader::BoxParams>* boxes) const {
+  graph.pass("objects",
+             {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}, {medium.ref, Use::FragmentUniformRead}},
+             [this, &color, &depth, &frameUniforms, medium, spheres, boxes](PassContext& pc) {
+               drawOver(pc.cmd, color, depth, [&] {
+                 drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, *spheres,
+                             *boxes);
+               });
              });
 }
 
@@ -97,10 +125,16 @@ PoolPass::PoolPass(const gpu::Context& ctx)
       floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
 
 void PoolPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                       const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const {
-  graph.pass("pool", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}, {pool.causticsRef, Use::FragmentSample}},
-             [this, &color, &depth, &frameUniforms, pool](PassContext& pc) {
-               drawOver(pc.cmd, color, depth, [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool); });
+                       const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
+                       const MediumDraw& medium) const {
+  graph.pass("pool",
+             {{colorRef, Use::ColorReadWrite},
+              {depthRef, Use::DepthReadWrite},
+              {pool.causticsRef, Use::FragmentSample},
+              {medium.ref, Use::FragmentUniformRead}},
+             [this, &color, &depth, &frameUniforms, pool, medium](PassContext& pc) {
+               drawOver(pc.cmd, color, depth,
+                        [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool, medium.buffer); });
              });
 }
 
@@ -192,7 +226,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
       {skyRef, Use::FragmentSample}, {colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
   if (underwater) uses.push_back({underwater->ref, Use::FragmentSample});
-  else uses.push_back({pool.causticsRef, Use::FragmentSample});  // the floor the refracted rays meet
+  uses.push_back({pool.causticsRef, Use::FragmentSample});  // the floor the refracted (or, from below, reflected) rays meet
   graph.pass("water", std::move(uses),
              [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
@@ -204,11 +238,8 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
           .storageBuffer(2, water.state())
           .uniformBuffer(3, *pool.uniforms)
           .uniformBuffer(4, *pool.objects);
-      if (underwater) {
-        writes.sampledImage(5, *underwater->image, underwater->sampler);
-      } else {
-        writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
-      }
+      if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
+      writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
       writes.bind(cmd, pipeline, pc.descriptors);
       drawWater(cmd, water);
     });
@@ -259,7 +290,8 @@ gpu::GraphicsPipelineDesc aovPipeline(const char* vertexShader, uint32_t pushSiz
 
 AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
     : groundPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("ground.vert", sizeof(shader::GroundParams)))),
-      spherePipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("sphere.vert", sizeof(shader::SphereParams)))) {
+      spherePipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("sphere.vert", sizeof(shader::SphereParams)))),
+      boxPipeline(gpu::createGraphicsPipeline(ctx, aovPipeline("box.vert", sizeof(shader::BoxParams)))) {
   if (withPoolAndWater) {
     wallsPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", 0));
     floorPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_floor.vert", sizeof(glm::uvec4)));
@@ -270,7 +302,8 @@ AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
 void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                       const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                       const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-                      const WaterDraw* water, const std::vector<shader::SphereParams>* spheres) const {
+                      const WaterDraw* water, const std::vector<shader::SphereParams>* spheres,
+                      const std::vector<shader::BoxParams>* boxes) const {
   std::vector<std::pair<ResourceRef, Use>> uses{
       {normalRef, Use::ColorWrite}, {positionRef, Use::ColorWrite}, {depthRef, Use::DepthWrite}};
   if (water) {
@@ -281,7 +314,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
   std::optional<PoolDraw> poolDraw;
   if (pool) poolDraw = *pool;
   graph.pass("aov", std::move(uses),
-             [this, &normal, &position, &depth, &frameUniforms, ground, poolDraw, waterDraw, spheres](PassContext& pc) {
+             [this, &normal, &position, &depth, &frameUniforms, ground, poolDraw, waterDraw, spheres, boxes](PassContext& pc) {
                const auto& cmd = pc.cmd;
                // Where nothing is hit: no normal, and a position and depth at infinity.
                const float inf = std::numeric_limits<float>::infinity();
@@ -302,8 +335,8 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                gpu::bindPipeline(cmd, groundPipeline, ground);
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
                cmd.draw(kGroundVertices, 1, 0, 0);
-               if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw);
-               drawSpheres(cmd, pc.descriptors, spherePipeline, frameUniforms, *spheres);
+               if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw, nullptr);
+               drawObjects(cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, nullptr, *spheres, *boxes);
                if (waterDraw) {
                  gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
                  gpu::DescriptorWrites()
@@ -329,6 +362,24 @@ void TonemapPass::declare(FrameGraph& graph, ResourceRef hdrRef, const gpu::Imag
                gpu::DescriptorWrites().storageImage(0, hdr).storageImage(1, ldr).bind(cmd, pipeline, pc.descriptors);
                gpu::dispatchCovering(cmd, pipeline, params.size.x, params.size.y);
              });
+}
+
+CameraMediumPass::CameraMediumPass(const gpu::Context& ctx)
+    : pipeline(gpu::createComputePipeline(ctx, "camera_medium.comp", sizeof(shader::WaterSurfaceParams))) {}
+
+void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms,
+                               const MediumDraw& medium) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{{medium.ref, Use::ComputeWrite}};
+  for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::ComputeRead});
+  graph.pass("camera medium", std::move(uses), [this, water, &frameUniforms, medium](PassContext& pc) {
+    gpu::bindPipeline(pc.cmd, pipeline, water.params);
+    gpu::DescriptorWrites()
+        .uniformBuffer(0, frameUniforms)
+        .storageBuffer(1, *medium.buffer)
+        .storageBuffer(2, water.state())
+        .bind(pc.cmd, pipeline, pc.descriptors);
+    pc.cmd.dispatch(1, 1, 1);
+  });
 }
 
 void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,

@@ -47,6 +47,14 @@ struct GroundPass {
   gpu::Pipeline pipeline;
 };
 
+// The medium around the camera (camera_medium.comp's output, or air where
+// the scene has no water), read by the passes that draw what the camera sees
+// directly.
+struct MediumDraw {
+  ResourceRef ref;
+  const gpu::Buffer* buffer = nullptr;
+};
+
 // What a pass needs to draw the pool: its uniform buffer and the floor grid's indices.
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
@@ -65,18 +73,19 @@ struct PoolDraw {
 struct PoolPass {
   explicit PoolPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool) const;
+               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
+               const MediumDraw& medium) const;
   gpu::Pipeline walls, floor;
 };
 
-// Graphics: the scene's spheres, one draw each, where `spheres` says they are
-// when the frame records (they may move from frame to frame).
-struct SpherePass {
-  explicit SpherePass(const gpu::Context& ctx);
+// Graphics: the scene's spheres and boxes, one draw each, where `spheres` and
+// `boxes` say they are when the frame records (spheres may move from frame to frame).
+struct ObjectPass {
+  explicit ObjectPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const gpu::Buffer& frameUniforms,
-               const std::vector<shader::SphereParams>* spheres) const;
-  gpu::Pipeline pipeline;
+               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
+               const std::vector<shader::SphereParams>* spheres, const std::vector<shader::BoxParams>* boxes) const;
+  gpu::Pipeline spherePipeline, boxPipeline;
 };
 
 // What a pass needs to draw the water grid: the state buffers (read in the
@@ -116,20 +125,30 @@ struct CausticsPass {
   gpu::Pipeline pipeline;
 };
 
+// Compute: whether the camera is under the simulated surface, into `medium`
+// (one invocation after the simulation).
+struct CameraMediumPass {
+  explicit CameraMediumPass(const gpu::Context& ctx);
+  void declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms,
+               const MediumDraw& medium) const;
+  gpu::Pipeline pipeline;
+};
+
 // Transfer: the colour target copied into another image of the same size.
 void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,
                       ResourceRef toRef, const gpu::Image& to);
 
-// Graphics: world normal, world position and view depth of the ground and the
-// water (arbitrary output variables for the EXR), into their own targets.
-// Recorded only when a frame asks for them.
+// Graphics: world normal, world position and view depth of every surface
+// (arbitrary output variables for the EXR), into their own targets. Recorded
+// only when a frame asks for them.
 struct AovPass {
   AovPass(const gpu::Context& ctx, bool withPoolAndWater);
   void declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image& normal, ResourceRef positionRef,
                const gpu::Image& position, ResourceRef depthRef, const gpu::Image& depth,
                const gpu::Buffer& frameUniforms, const shader::GroundParams& ground, const PoolDraw* pool,
-               const WaterDraw* water, const std::vector<shader::SphereParams>* spheres) const;
-  gpu::Pipeline groundPipeline, spherePipeline;
+               const WaterDraw* water, const std::vector<shader::SphereParams>* spheres,
+               const std::vector<shader::BoxParams>* boxes) const;
+  gpu::Pipeline groundPipeline, spherePipeline, boxPipeline;
   std::optional<gpu::Pipeline> wallsPipeline, floorPipeline, waterPipeline;
 };
 

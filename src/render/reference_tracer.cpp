@@ -22,14 +22,16 @@ namespace {
 // above float round-off at the scene's scale (metres), far below any feature.
 constexpr float kSurfaceOffset = 1e-4f;
 
-enum class Material { Ground, PoolWalls, PoolFloor, Water, Other };
+enum class Material { Ground, PoolWalls, PoolFloor, Water, Box, Sphere };
 
 Material materialOf(const std::string& meshName) {
   if (meshName == "ground") return Material::Ground;
   if (meshName == "pool_walls") return Material::PoolWalls;
   if (meshName == "pool_floor") return Material::PoolFloor;
   if (meshName == "water") return Material::Water;
-  return Material::Other;
+  if (meshName.rfind("box", 0) == 0) return Material::Box;
+  if (meshName.rfind("sphere", 0) == 0) return Material::Sphere;
+  throw std::logic_error("reference: no material for mesh " + meshName);
 }
 
 // Base-2 radical inverse: the second coordinate of the Hammersley points.
@@ -76,15 +78,18 @@ class Tracer {
         ior_(scene.water.ior) {
     if (hasPool(scene)) pool_ = poolParams(scene);
     const float time = float(frame) * scene.water.frameTime;
+    const scene::Scene placed = scene::sceneAt(scene, time);
     std::vector<scene::Mesh> traced;
+    size_t boxes = 0;
     for (auto& mesh : sceneMeshes(scene, water, time)) {
       const Material m = materialOf(mesh.name);
-      if (m == Material::Other) continue;  // the spheres: cast exactly instead of their tessellation
+      if (m == Material::Sphere) continue;  // cast exactly instead of their tessellation
       materials_.push_back(m);
+      albedo_.push_back(m == Material::Box ? placed.boxes.at(boxes++).albedo : glm::vec3(0.0f));
       if (m == Material::Water) waterMesh_ = int(traced.size());
       traced.push_back(std::move(mesh));
     }
-    spheres_ = scene::sceneAt(scene, time).spheres;
+    spheres_ = placed.spheres;
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
     bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
     tracedMeshes_ = std::move(traced);
@@ -100,7 +105,7 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * shader::sphereRadiance(uniforms_, sphere.albedo, n);
+      return transmittance * shader::objectRadiance(uniforms_, sphere.albedo, n);
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -119,9 +124,14 @@ class Tracer {
         if (first) *first = {p, n};
         return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), 1.0f);
       }
+      case Material::Box: {
+        const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+        if (first) *first = {p, n};
+        return transmittance * shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n);
+      }
       case Material::Water:
         return transmittance * water(p, dir, hit, specular, first);
-      case Material::Other:
+      case Material::Sphere:
         break;
     }
     return glm::vec3(0.0f);
@@ -175,6 +185,7 @@ class Tracer {
   float ior_;
   std::vector<scene::Mesh> tracedMeshes_;
   std::vector<Material> materials_;
+  std::vector<glm::vec3> albedo_;  // per traced mesh: the boxes'; unused for the others
   int waterMesh_ = -1;
   std::vector<glm::vec3> waterNormals_;
   std::vector<scene::Sphere> spheres_;  // where they are at the frame's time
@@ -194,6 +205,8 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
   }
   const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
   const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
+  // Camera rays start in the water when the camera is under the surface.
+  const bool cameraInWater = cameraMedium(scene, water).absorption.w > 0.0f;
 
   RenderedFrame out;
   out.width = width;
@@ -223,12 +236,12 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const float sx = (float(s) + 0.5f) / float(options.samples), sy = options.samples == 1 ? 0.5f : radicalInverse(s);
         cameraRay(float(x) + sx, float(y) + sy, origin, dir);
-        sum += tracer.radiance(origin, dir, false, 0, nullptr);
+        sum += tracer.radiance(origin, dir, cameraInWater, 0, nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;
       cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
-      tracer.radiance(origin, dir, false, options.maxSpecular, &first);  // no branches: the surface alone
+      tracer.radiance(origin, dir, cameraInWater, options.maxSpecular, &first);  // no branches: the surface alone
       for (int c = 0; c < 3; ++c) {
         out.rgba[k * 4 + c] = color[c];
         out.normal[k * 4 + c] = first.normal[c];

@@ -95,6 +95,22 @@ struct Renderer::Resources {
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
                  [this, scene](PassContext& pc) { recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps); });
     }
+    // The medium around the camera: decided after the simulation where there
+    // is water, air (zeros, uploaded once) where there is none.
+    if (water) {
+      medium = gpu::createBuffer(ctx, sizeof(shader::CameraMedium),
+                                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformBuffer,
+                                 gpu::MemoryUse::Device, "camera medium");
+    } else {
+      const shader::CameraMedium air{glm::vec4(0.0f)};
+      medium = gpu::createFilledBuffer(ctx, &air, sizeof(air), vk::BufferUsageFlagBits::eUniformBuffer,
+                                       gpu::MemoryUse::Upload, "camera medium");
+    }
+    const MediumDraw mediumDraw{graph.buffer("camera medium", medium), &medium};
+    if (water) {
+      cameraMediumPass.emplace(ctx);
+      cameraMediumPass->declare(graph, *waterDraw, uniforms, mediumDraw);
+    }
     std::optional<PoolDraw> poolDraw;
     if (hasPool(scene)) {
       const shader::PoolParams pool = poolParams(scene);
@@ -126,12 +142,13 @@ struct Renderer::Resources {
     groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
     if (poolDraw) {
       poolPass.emplace(ctx);
-      poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw);
+      poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw, mediumDraw);
     }
     for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
-    if (!spheres.empty()) {
-      spherePass.emplace(ctx);
-      spherePass->declare(graph, colorRef, color, depthRef, depth, uniforms, &spheres);
+    for (const auto& box : scene.boxes) boxes.push_back(boxParams(box));
+    if (!spheres.empty() || !boxes.empty()) {
+      objectPass.emplace(ctx);
+      objectPass->declare(graph, colorRef, color, depthRef, depth, uniforms, mediumDraw, &spheres, &boxes);
     }
     if (water) {
       std::optional<Underwater> underwater;
@@ -163,7 +180,7 @@ struct Renderer::Resources {
       aovPass.emplace(ctx, poolDraw.has_value());
       aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
                        aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr,
-                       &spheres);
+                       &spheres, &boxes);
       declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
       declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
@@ -191,8 +208,11 @@ struct Renderer::Resources {
   gpu::Buffer poolUniforms, objectUniforms, floorIndices;
   std::optional<CausticsPass> causticsPass;
   gpu::Image causticsImage;  // the caustics pass's target, or one texel of 1 without caustics
-  std::optional<SpherePass> spherePass;
+  std::optional<ObjectPass> objectPass;
   std::vector<shader::SphereParams> spheres;  // where the spheres are in the frame being recorded
+  std::vector<shader::BoxParams> boxes;
+  std::optional<CameraMediumPass> cameraMediumPass;
+  gpu::Buffer medium;
   // Arbitrary output variables, when the renderer was made with them.
   std::optional<AovPass> aovPass;
   gpu::Image aovNormal, aovPosition, aovDepth;

@@ -154,6 +154,7 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
   }
   const scene::Scene placed = scene::sceneAt(scene, time);
   for (size_t i = 0; i < placed.spheres.size(); ++i) meshes.push_back(sphereMesh(placed.spheres[i], "sphere" + std::to_string(i)));
+  for (size_t i = 0; i < placed.boxes.size(); ++i) meshes.push_back(boxMesh(placed.boxes[i], "box" + std::to_string(i)));
   if (water) {
     const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
     const auto cells = sim::toCells(*water, scene.water.extent);
@@ -163,6 +164,18 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     meshes.push_back(std::move(surface));
   }
   return meshes;
+}
+
+shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water) {
+  if (!water) return {glm::vec4(0.0f)};
+  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+  const glm::vec3 camera = scene.camera.position;
+  const glm::vec4 quad = shader::gridQuadAt(p, glm::vec2(camera.x, camera.z));
+  const auto u = [&](uint32_t i, uint32_t j) { return water->u[size_t(j) * water->n + i]; };
+  const uint32_t i = uint32_t(quad.x), j = uint32_t(quad.y);
+  const glm::vec4 corners(u(i, j), u(i + 1, j), u(i, j + 1), u(i + 1, j + 1));
+  const bool under = shader::underWaterSurface(p, camera, corners, glm::vec2(quad.z, quad.w));
+  return {under ? glm::vec4(glm::vec3(p.absorption), 1.0f) : glm::vec4(0.0f)};
 }
 
 }  // namespace tp::render

@@ -42,8 +42,13 @@ shader::GroundParams groundParams(const scene::Scene& scene);
 // sided at the edges: the normals water_surface.vert computes.
 std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent);
 
+// The medium around the camera given the water's state (none: air), as
+// camera_medium.comp decides it on the GPU.
+shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water);
+
 // The triangles a frame shows, in world space: the ground around the pool's
-// hole, the pool's walls and floor, and, given its state, the water surface.
+// hole, the pool's walls and floor, the objects, and, given its state, the water
+// surface.
 std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water, float time);
 
 }  // namespace tp::render

@@ -115,6 +115,17 @@ void validateScene(const Scene& s) {
       }
     }
   }
+  if (s.boxes.size() > TP_MAX_BOXES) {
+    throw std::runtime_error("boxes: at most " + std::to_string(TP_MAX_BOXES) + ", got " + std::to_string(s.boxes.size()));
+  }
+  for (const Box& box : s.boxes) {
+    requireFinite(box.center, "boxes[].center");
+    requireRange(box.size.x, 1e-4f, 1e3f, "boxes[].size.x");
+    requireRange(box.size.y, 1e-4f, 1e3f, "boxes[].size.y");
+    requireRange(box.size.z, 1e-4f, 1e3f, "boxes[].size.z");
+    requireRange(box.yawDegrees, -360.0f, 360.0f, "boxes[].yaw");
+    requireNonNegative(box.albedo, "boxes[].albedo");
+  }
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
     requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");

@@ -78,6 +78,16 @@ struct Sphere {
 // Where the sphere's centre is at time t.
 glm::vec3 sphereCenterAt(const Sphere& sphere, float t);
 
+// A Lambertian box, turned about the vertical by `yaw`; it stands still, and
+// the simulated water passes through it (it is drawn over the water inside it).
+struct Box {
+  glm::vec3 center{0.0f};
+  glm::vec3 size{0.5f};        // edge lengths along its own x, y, z (metres)
+  float yawDegrees = 0.0f;     // about +y, from +x towards -z
+  glm::vec3 albedo{0.3f, 0.5f, 0.7f};
+  bool operator==(const Box&) const = default;
+};
+
 struct Drop {
   float x = 0.0f, z = 0.0f;  // world position of the centre
   float radius = 0.3f;
@@ -124,6 +134,7 @@ struct Scene {
   Pool pool;
   Terrain terrain;
   std::vector<Sphere> spheres{{{0.9f, -0.25f, -0.7f}, 0.45f, {0.80f, 0.32f, 0.20f}}};
+  std::vector<Box> boxes;
   Render render;
   bool operator==(const Scene&) const = default;
 };

@@ -193,6 +193,12 @@ Scene parseScene(const std::string& text, const std::string& origin) {
       k.vec3("center", key.center);
     });
   });
+  top.objects("boxes", s.boxes, [](ObjectReader& r, scene::Box& box) {
+    r.vec3("center", box.center);
+    r.vec3("size", box.size);
+    r.number("yaw", box.yawDegrees);
+    r.vec3("albedo", box.albedo);
+  });
   top.object("render", [&](ObjectReader& r) {
     r.number("exposure", s.render.exposure);
     r.text("refraction", s.render.refraction);

@@ -1,0 +1,17 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// A Lambertian box (shared/shading.h), through the water when the camera is under it.
+#include "shared/shading.h"
+#include "shared/objects.h"
+
+layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in vec3 worldNormal;
+layout(location = 0) out vec4 color;
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform Medium { CameraMedium medium; };
+layout(push_constant) uniform Push { BoxParams params; };
+
+void main() {
+  color = vec4(objectRadiance(frame, params.albedo.rgb, normalize(worldNormal)) *
+                   viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+}
