@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "render/frame_uniforms.hpp"
+#include "render/hammersley.hpp"
 #include "render/pool_model.hpp"
 #include "render/reference_scene.hpp"
 #include "render/sky_image.hpp"
@@ -32,17 +33,6 @@ Material materialOf(const std::string& meshName) {
   if (meshName.rfind("box", 0) == 0) return Material::Box;
   if (meshName.rfind("sphere", 0) == 0) return Material::Sphere;
   throw std::logic_error("reference: no material for mesh " + meshName);
-}
-
-// Base-2 radical inverse: the second coordinate of the Hammersley points.
-float radicalInverse(uint32_t k) {
-  uint32_t bits = k;
-  bits = (bits << 16u) | (bits >> 16u);
-  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-  return float(bits) * 2.3283064365386963e-10f;
 }
 
 // Unpolarised Fresnel reflectance for a ray meeting a surface at cosI, going

@@ -1,0 +1,33 @@
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+namespace tp::render {
+
+// Base-2 radical inverse (van der Corput): k's bits mirrored about the binary
+// point, the second coordinate of the Hammersley points.
+inline float radicalInverse(uint32_t k) {
+  uint32_t bits = k;
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return float(bits) * 2.3283064365386963e-10f;  // 2^-32
+}
+
+// Point i of the n-point Hammersley set in [0,1)^2. The first coordinate is
+// the centre of stratum i, as the reference tracer's pixel samples use it.
+inline glm::vec2 hammersley(uint32_t i, uint32_t n) { return {(float(i) + 0.5f) / float(n), radicalInverse(i)}; }
+
+// A point of the unit square to the cosine-weighted unit hemisphere about +z
+// (Malley's method: the unit disc lifted to the hemisphere), as the SSAO
+// kernel and the AO reference sample it.
+inline glm::vec3 cosineHemisphere(glm::vec2 u) {
+  const float r = std::sqrt(u.x), phi = 6.28318530717958647692f * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
+}
+
+}  // namespace tp::render
