@@ -26,13 +26,11 @@ vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direct
 vec3 radianceAbove(vec3 p, vec3 r) {
   float nearest = 1e30;
   vec3 radiance = sky(r);
-  const float halfSize = pool.box.x, rim = pool.box.y;
-  const float sx = r.x > 0.0 ? (halfSize - p.x) / r.x : (r.x < 0.0 ? (-halfSize - p.x) / r.x : 1e30);
-  const float sz = r.z > 0.0 ? (halfSize - p.z) / r.z : (r.z < 0.0 ? (-halfSize - p.z) / r.z : 1e30);
-  const float sWall = min(sx, sz);
-  if (sWall > 0.0 && p.y + sWall * r.y <= rim) {
+  const vec2 walls = poolWallDistances(pool, p, r);
+  const float sWall = min(walls.x, walls.y);
+  if (sWall > 0.0 && p.y + sWall * r.y <= pool.box.y) {  // below the rim
     nearest = sWall;
-    radiance = poolWallRadiance(pool, frame, sx < sz ? vec3(-sign(r.x), 0.0, 0.0) : vec3(0.0, 0.0, -sign(r.z)));
+    radiance = poolWallRadiance(pool, frame, poolWallNormal(walls, r));
   }
   const ObjectHit object = castObjects(objects, p, r, nearest);
   return object.distance > 0.0 ? objectRadiance(frame, object.albedo, object.normal) : radiance;

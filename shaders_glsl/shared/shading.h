@@ -90,6 +90,21 @@ TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 norma
   return vec3(pool.wallAlbedo) / kPi * irradiance;
 }
 
+// Distances along origin + s dir from inside the pool's square to the wall
+// planes it goes towards: x to the x = +-half size pair, y to the z pair
+// (1e30 when dir is parallel to them).
+TP_INLINE vec2 poolWallDistances(PoolParams pool, vec3 origin, vec3 dir) {
+  const float halfSize = pool.box.x;
+  float sx = dir.x > 0.0f ? (halfSize - origin.x) / dir.x : (dir.x < 0.0f ? (-halfSize - origin.x) / dir.x : 1e30f);
+  float sz = dir.z > 0.0f ? (halfSize - origin.z) / dir.z : (dir.z < 0.0f ? (-halfSize - origin.z) / dir.z : 1e30f);
+  return vec2(sx, sz);
+}
+
+// The inward normal of the wall met first, given poolWallDistances.
+TP_INLINE vec3 poolWallNormal(vec2 walls, vec3 dir) {
+  return walls.x < walls.y ? vec3(-sign(dir.x), 0.0f, 0.0f) : vec3(0.0f, 0.0f, -sign(dir.z));
+}
+
 struct PoolHit {
   float distance;
   vec3 position;
@@ -111,10 +126,8 @@ TP_INLINE PoolHit poolHit(float distance, vec3 position, vec3 normal, bool onFlo
 // field in noise.z steps up to the walls and bisecting noise.w times. The
 // accurate refraction mode's cast, shared with C++ to measure it.
 TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
-  const float halfSize = pool.box.x;
-  float sx = dir.x > 0.0f ? (halfSize - origin.x) / dir.x : (dir.x < 0.0f ? (-halfSize - origin.x) / dir.x : 1e30f);
-  float sz = dir.z > 0.0f ? (halfSize - origin.z) / dir.z : (dir.z < 0.0f ? (-halfSize - origin.z) / dir.z : 1e30f);
-  float sWall = max(min(sx, sz), 0.0f);
+  vec2 walls = poolWallDistances(pool, origin, dir);
+  float sWall = max(min(walls.x, walls.y), 0.0f);
   float sBottom = dir.y < 0.0f ? (poolBottom(pool) - origin.y) / dir.y : 1e30f;
   float sEnd = min(sWall, sBottom);
   float previous = 0.0f;
@@ -134,8 +147,7 @@ TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
     previous = s;
   }
   vec3 wallPoint = origin + sWall * dir;
-  vec3 normal = sx < sz ? vec3(-sign(dir.x), 0.0f, 0.0f) : vec3(0.0f, 0.0f, -sign(dir.z));
-  return poolHit(sWall, wallPoint, normal, false);
+  return poolHit(sWall, wallPoint, poolWallNormal(walls, dir), false);
 }
 
 // Where world point p lands on the screen, in pixels from the top-left corner.
