@@ -3,6 +3,7 @@
 // A Lambertian box (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/objects.h"
+#include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -12,6 +13,8 @@ layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(push_constant) uniform Push { BoxParams params; };
 
 void main() {
-  color = vec4(objectRadiance(frame, params.albedo.rgb, normalize(worldNormal)) *
-                   viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+  const vec3 n = normalize(worldNormal);
+  const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
+  color = vec4(objectRadiance(frame, params.albedo.rgb, n) * toCamera, 1.0);
+  writeGbuffer(frame, n, objectRadiance(withoutSun(frame), params.albedo.rgb, n) * toCamera);
 }

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // The checkered ground plane (shared/shading.h).
 #include "shared/shading.h"
+#include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -10,5 +11,8 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(push_constant) uniform Push { GroundParams ground; };
 
 void main() {
-  color = vec4(groundRadiance(ground, frame, worldPosition.xz, fwidth(worldPosition.xz), normalize(worldNormal), 1.0), 1.0);
+  const vec3 n = normalize(worldNormal);
+  const vec2 footprint = fwidth(worldPosition.xz);
+  color = vec4(groundRadiance(ground, frame, worldPosition.xz, footprint, n, 1.0), 1.0);
+  writeGbuffer(frame, n, groundRadiance(ground, withoutSun(frame), worldPosition.xz, footprint, n, 1.0));
 }

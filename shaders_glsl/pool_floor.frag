@@ -3,6 +3,7 @@
 // The tiled pool floor, Lambertian (shared/shading.h), the sun through the
 // waves from the caustics texture, through the water when the camera is under it.
 #include "shared/shading.h"
+#include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -13,7 +14,10 @@ layout(binding = 2) uniform sampler2D caustics;
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 
 void main() {
+  const vec3 n = normalize(worldNormal);
+  const vec2 footprint = fwidth(worldPosition.xz);
   const float caustic = texture(caustics, causticsUv(pool, worldPosition.xz)).r;
-  const vec3 radiance = poolFloorRadiance(pool, frame, worldPosition, normalize(worldNormal), fwidth(worldPosition.xz), caustic);
-  color = vec4(radiance * viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+  const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
+  color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera, 1.0);
+  writeGbuffer(frame, n, poolFloorRadiance(pool, withoutSun(frame), worldPosition, n, footprint, caustic) * toCamera);
 }

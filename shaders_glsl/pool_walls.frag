@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // The pool's walls, Lambertian (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
+#include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -11,6 +12,8 @@ layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 
 void main() {
-  color = vec4(poolWallRadiance(pool, frame, normalize(worldNormal)) *
-                   viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+  const vec3 n = normalize(worldNormal);
+  const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
+  color = vec4(poolWallRadiance(pool, frame, n) * toCamera, 1.0);
+  writeGbuffer(frame, n, poolWallRadiance(pool, withoutSun(frame), n) * toCamera);
 }

@@ -16,12 +16,13 @@ struct FrameUniforms {
   vec4 sunIrradiance;          // rgb irradiance of the sun disk on a surface facing it
   vec4 skyIrradiance;          // rgb irradiance of the sky (without sun) on an up-facing surface
   vec4 viewport;               // width, height, 1/width, 1/height
+  mat4 inverseProjection;      // clip to camera: view-space positions from the depth buffer
 };
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 4 * 64 + 5 * 16);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

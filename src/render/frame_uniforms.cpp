@@ -19,6 +19,7 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.sunIrradiance = glm::vec4(light.sunIrradiance, 0.0f);
   u.skyIrradiance = glm::vec4(light.skyIrradiance, 0.0f);
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+  u.inverseProjection = glm::inverse(u.projection);
   return u;
 }
 

@@ -18,6 +18,13 @@ inline float radicalInverse(uint32_t k) {
   return float(bits) * 2.3283064365386963e-10f;  // 2^-32
 }
 
+// Base-3 radical inverse: the third coordinate of the 3D Hammersley points.
+inline float radicalInverse3(uint32_t k) {
+  float result = 0.0f, digit = 1.0f / 3.0f;
+  for (; k > 0; k /= 3, digit /= 3.0f) result += float(k % 3) * digit;
+  return result;
+}
+
 // Point i of the n-point Hammersley set in [0,1)^2. The first coordinate is
 // the centre of stratum i, as the reference tracer's pixel samples use it.
 inline glm::vec2 hammersley(uint32_t i, uint32_t n) { return {(float(i) + 0.5f) / float(n), radicalInverse(i)}; }

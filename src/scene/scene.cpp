@@ -1,6 +1,7 @@
 #include "scene/scene.hpp"
 
 #include "shared/objects.h"
+#include "shared/ssao.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -126,6 +127,16 @@ void validateScene(const Scene& s) {
     requireRange(box.yawDegrees, -360.0f, 360.0f, "boxes[].yaw");
     requireNonNegative(box.albedo, "boxes[].albedo");
   }
+  const Ao& ao = s.ao;
+  requireRange(float(ao.kernelSize), 1.0f, float(TP_MAX_SSAO_KERNEL), "ao.kernel_size");
+  requireRange(ao.radius, 1e-4f, 1e3f, "ao.radius");
+  requireRange(ao.bias, 0.0f, 1e3f, "ao.bias");
+  requireRange(float(ao.noiseSize), 1.0f, 8.0f, "ao.noise_size");
+  if (ao.blur != "off" && ao.blur != "box" && ao.blur != "bilateral") {
+    throw std::runtime_error("ao.blur must be off, box or bilateral, got '" + ao.blur + "'");
+  }
+  requireRange(float(ao.blurTaps), 1.0f, 32.0f, "ao.blur_taps");
+  requireRange(ao.blurDepthTolerance, 1e-6f, 10.0f, "ao.blur_depth_tolerance");
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
     requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");

@@ -126,6 +126,20 @@ struct Render {
   bool operator==(const Render&) const = default;
 };
 
+// Screen-space ambient occlusion of the sky's light (render/ssao_model.cpp
+// turns it into the shaders' parameters).
+struct Ao {
+  bool enabled = false;
+  unsigned kernelSize = 16;    // hemisphere samples per pixel (Hammersley), 1..64
+  float radius = 0.5f;         // metres
+  float bias = 0.025f;         // metres: depth difference that does not count as occlusion
+  unsigned noiseSize = 4;      // side of the rotation tile in pixels, 1..8
+  std::string blur = "bilateral";  // off | box | bilateral
+  unsigned blurTaps = 4;       // per direction of the separable blur
+  float blurDepthTolerance = 0.05f;  // bilateral: neighbours within this fraction of the pixel's view depth
+  bool operator==(const Ao&) const = default;
+};
+
 struct Scene {
   Camera camera;
   Sky sky;
@@ -136,6 +150,7 @@ struct Scene {
   std::vector<Sphere> spheres{{{0.9f, -0.25f, -0.7f}, 0.45f, {0.80f, 0.32f, 0.20f}}};
   std::vector<Box> boxes;
   Render render;
+  Ao ao;
   bool operator==(const Scene&) const = default;
 };
 

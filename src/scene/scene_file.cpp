@@ -199,6 +199,16 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("yaw", box.yawDegrees);
     r.vec3("albedo", box.albedo);
   });
+  top.object("ao", [&](ObjectReader& r) {
+    r.flag("enabled", s.ao.enabled);
+    r.count("kernel_size", s.ao.kernelSize);
+    r.number("radius", s.ao.radius);
+    r.number("bias", s.ao.bias);
+    r.count("noise_size", s.ao.noiseSize);
+    r.text("blur", s.ao.blur);
+    r.count("blur_taps", s.ao.blurTaps);
+    r.number("blur_depth_tolerance", s.ao.blurDepthTolerance);
+  });
   top.object("render", [&](ObjectReader& r) {
     r.number("exposure", s.render.exposure);
     r.text("refraction", s.render.refraction);

@@ -1,0 +1,45 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// One direction of the separable AO blur: a box filter, or a depth-aware
+// (bilateral) one that averages only neighbours at about the pixel's own view
+// depth, so that AO does not bleed across silhouettes.
+#include "shared/frame.h"
+#include "shared/ssao.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform sampler2D depthTexture;
+layout(binding = 2, r32f) uniform readonly image2D source;
+layout(binding = 3, r32f) uniform writeonly image2D target;
+layout(push_constant) uniform Push { AoBlurParams params; };
+
+// Distance in front of the camera: for a perspective projection it does not
+// depend on the pixel's x and y.
+float viewDepth(ivec2 q) {
+  const vec4 v = frame.inverseProjection * vec4(0.0, 0.0, texelFetch(depthTexture, q, 0).r, 1.0);
+  return -v.z / v.w;
+}
+
+void main() {
+  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 size = ivec2(params.size.xy);
+  if (any(greaterThanEqual(p, size))) return;
+  if (texelFetch(depthTexture, p, 0).r >= 1.0) {
+    imageStore(target, p, vec4(1.0));
+    return;
+  }
+  const ivec2 step = params.config.x == 0u ? ivec2(1, 0) : ivec2(0, 1);
+  const float depth = viewDepth(p);
+  float sum = 0.0, weights = 0.0;
+  for (int k = 0; k < int(params.config.y); ++k) {
+    const ivec2 q = clamp(p + (params.window.x + k) * step, ivec2(0), size - 1);
+    float w = 1.0;
+    if (params.config.z != 0u) {
+      const bool surface = texelFetch(depthTexture, q, 0).r < 1.0;
+      w = surface && abs(viewDepth(q) - depth) <= params.shape.x * depth ? 1.0 : 0.0;
+    }
+    sum += w * imageLoad(source, q).r;
+    weights += w;
+  }
+  imageStore(target, p, vec4(sum / max(weights, 1.0)));  // the pixel itself always counts
+}
