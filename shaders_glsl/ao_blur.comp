@@ -13,18 +13,19 @@ layout(binding = 2, r32f) uniform readonly image2D source;
 layout(binding = 3, r32f) uniform writeonly image2D target;
 layout(push_constant) uniform Push { AoBlurParams params; };
 
-// Distance in front of the camera: for a perspective projection it does not
-// depend on the pixel's x and y.
+// Distance in front of the camera of AO pixel q's surface: for a perspective
+// projection it does not depend on the pixel's x and y.
 float viewDepth(ivec2 q) {
-  const vec4 v = frame.inverseProjection * vec4(0.0, 0.0, texelFetch(depthTexture, q, 0).r, 1.0);
-  return -v.z / v.w;
+  return -viewPositionFromDepth(frame.inverseProjection, vec2(0.5), texelFetch(depthTexture, q * int(params.config.w), 0).r).z;
 }
+
+bool hasSurface(ivec2 q) { return texelFetch(depthTexture, q * int(params.config.w), 0).r < 1.0; }
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   const ivec2 size = ivec2(params.size.xy);
   if (any(greaterThanEqual(p, size))) return;
-  if (texelFetch(depthTexture, p, 0).r >= 1.0) {
+  if (!hasSurface(p)) {
     imageStore(target, p, vec4(1.0));
     return;
   }
@@ -34,12 +35,11 @@ void main() {
   for (int k = 0; k < int(params.config.y); ++k) {
     const ivec2 q = clamp(p + (params.window.x + k) * step, ivec2(0), size - 1);
     float w = 1.0;
-    if (params.config.z != 0u) {
-      const bool surface = texelFetch(depthTexture, q, 0).r < 1.0;
-      w = surface && abs(viewDepth(q) - depth) <= params.shape.x * depth ? 1.0 : 0.0;
-    }
+    if (params.config.z != 0u) w = hasSurface(q) && abs(viewDepth(q) - depth) <= params.shape.x * depth ? 1.0 : 0.0;
     sum += w * imageLoad(source, q).r;
     weights += w;
   }
-  imageStore(target, p, vec4(sum / max(weights, 1.0)));  // the pixel itself always counts
+  // A window where no neighbour qualifies (an isolated pixel under an odd tap
+  // count that leaves the pixel itself out) keeps the pixel's own value.
+  imageStore(target, p, vec4(weights > 0.0 ? sum / weights : imageLoad(source, p).r));
 }

@@ -17,28 +17,49 @@ layout(binding = 3) uniform Kernel { SsaoKernel kernel; };
 layout(binding = 4, r32f) uniform writeonly image2D aoImage;
 layout(push_constant) uniform Push { SsaoParams params; };
 
-vec3 viewPosition(vec2 uv, float depth) {
-  const vec4 p = frame.inverseProjection * vec4(uv * 2.0 - 1.0, depth, 1.0);
-  return p.xyz / p.w;
+vec3 viewPositionAt(ivec2 q, vec2 frameSize) {
+  return viewPositionFromDepth(frame.inverseProjection, (vec2(q) + 0.5) / frameSize, texelFetch(depthTexture, q, 0).r);
+}
+
+// The scene's view-space z seen at texture coordinate uv. Nearest (the
+// original's): the depth of the pixel uv falls in, which on a surface seen at
+// a grazing angle lies far nearer or farther than the sample, and a flat
+// ground then occludes itself. Interpolated: the depth buffer bilinearly
+// interpolated at uv, exact on any plane (depth is affine in screen space);
+// four texel fetches, by hand, as depth formats need not filter linearly.
+float sceneViewZ(vec2 uv, vec2 frameSize) {
+  if (params.config.w == 0u) return viewPositionAt(ivec2(uv * frameSize), frameSize).z;
+  const vec2 at = uv * frameSize - 0.5;
+  const ivec2 q = ivec2(floor(at));
+  const vec2 t = at - vec2(q);
+  const ivec2 last = ivec2(frameSize) - 1;
+  const float d00 = texelFetch(depthTexture, clamp(q, ivec2(0), last), 0).r;
+  const float d10 = texelFetch(depthTexture, clamp(q + ivec2(1, 0), ivec2(0), last), 0).r;
+  const float d01 = texelFetch(depthTexture, clamp(q + ivec2(0, 1), ivec2(0), last), 0).r;
+  const float d11 = texelFetch(depthTexture, clamp(q + ivec2(1, 1), ivec2(0), last), 0).r;
+  const float depth = mix(mix(d00, d10, t.x), mix(d01, d11, t.x), t.y);
+  return viewPositionFromDepth(frame.inverseProjection, uv, depth).z;
 }
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  const ivec2 size = ivec2(params.config.zw);
-  if (any(greaterThanEqual(p, size))) return;
-  const float depth = texelFetch(depthTexture, p, 0).r;
-  if (depth >= 1.0) {  // no surface: nothing to occlude
+  if (any(greaterThanEqual(p, ivec2(params.size.xy)))) return;
+  const ivec2 d = p * int(params.config.z);  // the frame pixel this AO pixel stands for
+  const vec2 frameSize = vec2(params.size.zw);
+  if (texelFetch(depthTexture, d, 0).r >= 1.0) {  // no surface: nothing to occlude
     imageStore(aoImage, p, vec4(1.0));
     return;
   }
-  const vec3 origin = viewPosition((vec2(p) + 0.5) / vec2(size), depth);
-  const vec3 n = normalize(imageLoad(normalImage, p).xyz);
+  const vec3 origin = viewPositionAt(d, frameSize);
+  const vec3 n = normalize(imageLoad(normalImage, d).xyz);
   const int tile = int(params.config.y);
   const vec3 random = vec3(kernel.noise[(p.y % tile) * tile + p.x % tile].xy, 0.0);
   // Gram-Schmidt; a random vector (nearly) along the normal leaves no
   // tangent, and then any perpendicular serves.
   vec3 tangent = random - n * dot(random, n);
-  if (dot(tangent, tangent) < 1e-6) tangent = cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0));
+  if (dot(tangent, tangent) <= 1e-6 * dot(random, random)) {  // also a zero random vector
+    tangent = cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0));
+  }
   tangent = normalize(tangent);
   const mat3 tbn = mat3(tangent, cross(n, tangent), n);
   const float radius = params.shape.x, bias = params.shape.y;
@@ -47,9 +68,8 @@ void main() {
     const vec3 s = origin + radius * (tbn * kernel.samples[i].xyz);
     const vec4 clip = frame.projection * vec4(s, 1.0);
     const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;  // off screen: no evidence
-    const ivec2 q = ivec2(uv * vec2(size));
-    const float sceneZ = viewPosition((vec2(q) + 0.5) / vec2(size), texelFetch(depthTexture, q, 0).r).z;
+    if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;  // off screen: no evidence
+    const float sceneZ = sceneViewZ(uv, frameSize);
     const float range = smoothstep(0.0, 1.0, radius / abs(origin.z - sceneZ));
     occluded += (sceneZ >= s.z + bias ? 1.0 : 0.0) * range;
   }

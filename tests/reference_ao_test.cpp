@@ -32,7 +32,7 @@ namespace tp::test {
 namespace {
 
 constexpr float kRadius = 0.5f;
-constexpr uint32_t kRays = render::ReferenceAoOptions{}.rays;
+const uint32_t kRays = render::ReferenceAoOptions{}.rays;
 constexpr uint32_t kPixelsPerCase = 64;
 
 // A pixel's AO is an average of N rays whose hit is a 0/1 outcome: with
@@ -86,7 +86,7 @@ struct SurfaceImage {
 
 std::vector<float> traceAo(const scene::Scene& s, const SurfaceImage& image, uint32_t rays = kRays) {
   return render::referenceAmbientOcclusion(s, nullptr, 0.0f, image.position, image.normal, image.width, image.height,
-                                           {.radius = kRadius, .rays = rays});
+                                           {.radius = kRadius, .rays = rays, .exactSpheres = true, .originOffset = {}, .progress = nullptr});
 }
 
 // Occluded fraction of the cosine-weighted hemisphere at a point on one plane
@@ -259,11 +259,24 @@ TEST(ReferenceAo, BadInputsThrow) {
   };
   EXPECT_THROW(ao(shorter, image.normal, {}), std::invalid_argument);
   EXPECT_THROW(ao(image.position, shorter, {}), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, {.radius = 0.0f}), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, {.radius = -1.0f}), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, {.radius = std::numeric_limits<float>::infinity()}), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, {.radius = std::numeric_limits<float>::quiet_NaN()}), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, {.rays = 0}), std::invalid_argument);
+  auto withRadius = [](float radius) {
+    render::ReferenceAoOptions o;
+    o.radius = radius;
+    return o;
+  };
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(0.0f)), std::invalid_argument);
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(-1.0f)), std::invalid_argument);
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::infinity())), std::invalid_argument);
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::quiet_NaN())), std::invalid_argument);
+  render::ReferenceAoOptions noRays;
+  noRays.rays = 0;
+  EXPECT_THROW(ao(image.position, image.normal, noRays), std::invalid_argument);
+  render::ReferenceAoOptions shortOffsets;
+  const std::vector<float> oneOffset{0.01f};
+  shortOffsets.originOffset = oneOffset;
+  if (size_t(image.width) * image.height != 1) {
+    EXPECT_THROW(ao(image.position, image.normal, shortOffsets), std::invalid_argument);
+  }
   EXPECT_NO_THROW(ao(image.position, image.normal, {}));
 }
 

@@ -118,26 +118,40 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     for (const auto& p : f.passes) n.push_back(p.name);
     return n;
   };
+  const std::vector<std::string> opaque{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool",
+                                       "objects", "ssao", "ao blur x", "ao blur y", "ao apply", "water"};
+  auto with = [&](std::vector<std::string> tail) {
+    std::vector<std::string> all = opaque;
+    all.insert(all.end(), tail.begin(), tail.end());
+    return all;
+  };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  EXPECT_EQ(names(hdrOnly), (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water", "readback hdr"}));
+  EXPECT_EQ(names(hdrOnly), with({"readback hdr"}));
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both), (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water",
-                                                   "tonemap", "readback hdr", "readback ldr"}));
+  EXPECT_EQ(names(both), with({"tonemap", "readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
-  EXPECT_EQ(names(ldrOnly),
-            (std::vector<std::string>{"simulate", "camera medium", "caustics", "sky", "background", "ground", "pool", "objects", "water", "tonemap",
-                                      "readback ldr"}));
+  EXPECT_EQ(names(ldrOnly), with({"tonemap", "readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
   for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
 
-  // A scene without water pays for none: no simulation, no water pass.
+  // A scene without water pays for none: no simulation, no water pass; one
+  // without AO, for no SSAO passes; AO at half resolution without a blur:
+  // SSAO, upsample, apply.
   scene::Scene dry = scene::defaultScene();
   dry.water.enabled = false;
+  dry.ao.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
             (std::vector<std::string>{"sky", "background", "ground", "objects", "readback hdr"}));
+  dry.ao = scene::Ao{};
+  dry.ao.resolution = "half";
+  dry.ao.blur = "off";
+  render::Renderer halfRenderer(ctx(), dry, 64, 48);
+  EXPECT_EQ(names(halfRenderer.render({.hdr = true})),
+            (std::vector<std::string>{"sky", "background", "ground", "objects", "ssao", "ao upsample", "ao apply",
+                                      "readback hdr"}));
 }
 
 TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {
@@ -490,6 +504,9 @@ TEST(SkyImageCli, MissingOrUnfitSkyImagesFailCleanly) {
 // true hit), and only an approximation where it does not (waves, terrain).
 TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
   scene::Scene accurate = flatWaterFromAbove();
+  // The accurate mode traces the floor itself and sees no SSAO, the apparent
+  // mode reads the frame's own image of it, AO included: compare without.
+  accurate.ao.enabled = false;
   scene::Scene apparent = accurate;
   apparent.render.refraction = "apparent";
   render::Renderer ra(ctx(), accurate, kWidth, kHeight), rb(ctx(), apparent, kWidth, kHeight);

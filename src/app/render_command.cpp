@@ -9,7 +9,9 @@
 #include "app/gpu_session.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
+#include "render/gbuffer_world.hpp"
 #include "render/image_error.hpp"
+#include "render/reference_ao.hpp"
 #include "render/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "render/water_model.hpp"
@@ -35,32 +37,69 @@ void printProfile(const render::RenderedFrame& frame) {
   std::printf("%-20s %10.3f\n", "total", total);
 }
 
+bool wants(const std::vector<std::string>& aovs, const char* name) {
+  return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
+}
+
+// One float per pixel of a `width` x `height` image, nearest-sampled to the
+// frame's size (the raw AO at half resolution).
+std::vector<float> toFrameSize(const std::vector<float>& values, uint32_t width, uint32_t height, uint32_t frameWidth,
+                               uint32_t frameHeight) {
+  std::vector<float> out(size_t(frameWidth) * frameHeight);
+  for (uint32_t y = 0; y < frameHeight; ++y) {
+    for (uint32_t x = 0; x < frameWidth; ++x) {
+      out[size_t(y) * frameWidth + x] = values[size_t(y * height / frameHeight) * width + x * width / frameWidth];
+    }
+  }
+  return out;
+}
+
 // RGBA, then each requested AOV's channels (layer.channel names), interleaved.
-io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<std::string>& aovs) {
+// `ao`, `aoRaw`, `aoRef`: one value per pixel, where requested.
+io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<std::string>& aovs,
+                        const std::vector<float>& aoRaw, const std::vector<float>& aoRef) {
   struct Channel {
     std::string name;
     const std::vector<float>* source;
     int component;
+    int stride;
   };
-  std::vector<Channel> channels{{"R", &frame.rgba, 0}, {"G", &frame.rgba, 1}, {"B", &frame.rgba, 2}, {"A", &frame.rgba, 3}};
-  auto requested = [&](const char* name) { return std::find(aovs.begin(), aovs.end(), name) != aovs.end(); };
-  if (requested("Z")) channels.push_back({"Z", &frame.position, 3});
-  if (requested("N")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("N.") + "xyz"[c], &frame.normal, c});
+  std::vector<Channel> channels{
+      {"R", &frame.rgba, 0, 4}, {"G", &frame.rgba, 1, 4}, {"B", &frame.rgba, 2, 4}, {"A", &frame.rgba, 3, 4}};
+  if (wants(aovs, "Z")) channels.push_back({"Z", &frame.position, 3, 4});
+  if (wants(aovs, "N")) {
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string("N.") + "xyz"[c], &frame.normal, c, 4});
   }
-  if (requested("P")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("P.") + "xyz"[c], &frame.position, c});
+  if (wants(aovs, "P")) {
+    for (int c = 0; c < 3; ++c) channels.push_back({std::string("P.") + "xyz"[c], &frame.position, c, 4});
   }
+  if (wants(aovs, "ao")) channels.push_back({"ao", &frame.ao, 0, 1});
+  if (wants(aovs, "ao_raw")) channels.push_back({"ao_raw", &aoRaw, 0, 1});
+  if (wants(aovs, "ao_ref")) channels.push_back({"ao_ref", &aoRef, 0, 1});
   io::FloatImage image{frame.width, frame.height, {}, {}};
   for (const auto& c : channels) image.channels.push_back(c.name);
   const size_t pixels = size_t(frame.width) * frame.height;
   image.pixels.resize(pixels * channels.size());
   for (size_t p = 0; p < pixels; ++p) {
     for (size_t c = 0; c < channels.size(); ++c) {
-      image.pixels[p * channels.size() + c] = (*channels[c].source)[p * 4 + channels[c].component];
+      image.pixels[p * channels.size() + c] = (*channels[c].source)[p * channels[c].stride + channels[c].component];
     }
   }
   return image;
+}
+
+// Ambient occlusion ray traced from the frame's own G-buffer, the ground truth
+// of the SSAO error figures.
+std::vector<float> referenceAo(const scene::Scene& scene, const render::RenderedFrame& frame, uint32_t frameNumber) {
+  const render::WorldGbuffer g = render::worldGbuffer(frame);
+  render::ReferenceAoOptions options{.radius = scene.ao.radius,
+                                     .exactSpheres = false,
+                                     .originOffset = g.uncertainty,
+                                     .progress = [](double done) {
+                                       std::fprintf(stderr, "reference AO: %3.0f%%\n", 100.0 * done);
+                                     }};
+  return render::referenceAmbientOcclusion(scene, nullptr, float(frameNumber) * scene.water.frameTime, g.position,
+                                           g.normal, frame.width, frame.height, options);
 }
 
 // The CPU reference of the frame; the water is still simulated on the GPU,
@@ -98,10 +137,19 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   auto* profile = cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
   cmd->add_option("--aov", o.aovs,
                   "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
-                  "P (P.x P.y P.z world position); infinite Z and P where nothing is hit")
+                  "P (P.x P.y P.z world position); infinite Z and P where nothing is hit. With AO on: ao (after "
+                  "blur and upsample), ao_raw (unblurred, at the AO resolution), ao_ref (ray traced from the same "
+                  "G-buffer with Embree, 1024 rays per pixel; slow)")
       ->delimiter(',')
       ->type_name("LIST")
-      ->check(CLI::IsMember({"Z", "N", "P"}));
+      ->check(CLI::IsMember({"Z", "N", "P", "ao", "ao_raw", "ao_ref"}));
+  auto* noAo = cmd->add_flag("--no-ao", o.noAo, "Switch the scene's ambient occlusion off for this render");
+  cmd->add_option("--preset", o.aoPreset,
+                  "AO preset for this render, replacing the scene's ao settings: fast, balanced, quality, or "
+                  "baseline (the LearnOpenGL-style SSAO they are measured against)")
+      ->type_name("NAME")
+      ->check(CLI::IsMember({"fast", "balanced", "quality", "baseline"}))
+      ->excludes(noAo);
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")
@@ -125,18 +173,28 @@ int runRender(const RenderOptions& o) {
     io::checkWritable(o.png);
   }
   scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  if (!o.aoPreset.empty()) scene.ao = scene::aoPreset(o.aoPreset);
+  if (o.noAo) scene.ao.enabled = false;
+  const bool aoAovs = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
+  if (aoAovs && (o.reference || !scene.ao.enabled)) {
+    throw std::runtime_error("--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
+                             "nor with a scene whose ao.enabled is false");
+  }
 
-  const bool aovs = !o.aovs.empty();
+  const bool aovs = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P");
   GpuSession session(o.validate, o.device);
   render::RenderedFrame frame;
   if (o.reference) {
     frame = renderReferenceFrame(session, scene, o);
   } else {
     render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs});
-    frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs});
+    frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs, .ao = aoAovs});
   }
+  std::vector<float> aoRaw, aoRef;
+  if (wants(o.aovs, "ao_raw")) aoRaw = toFrameSize(frame.aoRaw, frame.aoWidth, frame.aoHeight, frame.width, frame.height);
+  if (wants(o.aovs, "ao_ref")) aoRef = referenceAo(scene, frame, o.frame);
 
-  io::FloatImage image = withAovs(frame, o.aovs);
+  io::FloatImage image = withAovs(frame, o.aovs, aoRaw, aoRef);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
   io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};

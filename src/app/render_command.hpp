@@ -17,7 +17,9 @@ struct RenderOptions {
   bool validate = false;
   std::string device;
   bool profile = false;
-  std::vector<std::string> aovs;  // Z, N, P
+  std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
+  bool noAo = false;              // switch the scene's ambient occlusion off for this render
+  std::string aoPreset;           // empty: the scene's own AO settings
   bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
   uint32_t samples = 64;          // per pixel, with --reference
 };

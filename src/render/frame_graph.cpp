@@ -23,6 +23,7 @@ UseInfo info(Use use) {
     case Use::ComputeReadWrite:
       return {{S::eComputeShader, A::eShaderStorageRead | A::eShaderStorageWrite}, L::eGeneral, true, true};
     case Use::FragmentSample: return {{S::eFragmentShader, A::eShaderSampledRead}, L::eShaderReadOnlyOptimal, true, false};
+    case Use::ComputeSample: return {{S::eComputeShader, A::eShaderSampledRead}, L::eShaderReadOnlyOptimal, true, false};
     case Use::ColorWrite: return {{S::eColorAttachmentOutput, A::eColorAttachmentWrite}, L::eColorAttachmentOptimal, false, true};
     case Use::ColorReadWrite:
       return {{S::eColorAttachmentOutput, A::eColorAttachmentRead | A::eColorAttachmentWrite}, L::eColorAttachmentOptimal, true, true};

@@ -18,6 +18,7 @@ enum class Use {
   ComputeWrite,      // storage buffer or storage image, fully written
   ComputeReadWrite,  // storage buffer or storage image, updated in place
   FragmentSample,    // sampled image in the fragment stage
+  ComputeSample,     // sampled image in the compute stage (a depth target read by SSAO)
   ColorWrite,        // color attachment, cleared or fully covered
   ColorReadWrite,    // color attachment, loaded and drawn over
   DepthWrite,        // depth attachment, cleared, tested and written
@@ -56,6 +57,8 @@ class FrameGraph {
 
   using Recorder = std::function<void(PassContext&)>;
   void pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record);
+
+  size_t passCount() const { return passes_.size(); }
 
   // Returns the names of the passes recorded, in order. Requested buffers end
   // with a barrier that makes them readable on the host.

@@ -25,7 +25,7 @@ vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout 
 }
 
 // Draws over what the colour and depth targets already hold (both loaded and
-// stored): the framing of every pass after the ground.
+// stored): the framing of the water pass, which has no G-buffer targets.
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
               const std::function<void()>& draw) {
   auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
@@ -38,6 +38,45 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
   setViewport(cmd, color.extent);
   draw();
   cmd.endRendering();
+}
+
+// Renders over the opaque surfaces' targets. The first surface pass
+// (`first`) clears depth and the G-buffer (zero ambient: AO takes nothing from
+// pixels no surface covers); later ones load them. Absent G-buffer targets
+// (no AO) are null views, which take no writes.
+void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, bool first,
+                  const std::function<void()>& draw) {
+  const auto load = first ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eLoad;
+  auto gbufferTarget = [&](const Target& target) {
+    if (!target.image) return vk::RenderingAttachmentInfo{.imageView = nullptr};
+    return attachment(*target.image, vk::ImageLayout::eColorAttachmentOptimal, load,
+                      vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
+  };
+  const vk::RenderingAttachmentInfo colorTargets[] = {
+      attachment(*t.color.image, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad),
+      gbufferTarget(t.normal), gbufferTarget(t.ambient)};
+  auto depthTarget = attachment(*t.depth.image, vk::ImageLayout::eDepthAttachmentOptimal, load,
+                                vk::ClearValue{.depthStencil = {1.0f, 0}});
+  const vk::Extent2D extent = t.color.image->extent;
+  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
+                                       .layerCount = 1,
+                                       .colorAttachmentCount = 3,
+                                       .pColorAttachments = colorTargets,
+                                       .pDepthAttachment = &depthTarget});
+  setViewport(cmd, extent);
+  draw();
+  cmd.endRendering();
+}
+
+// The frame-graph uses of a surface pass: colour drawn over, depth and the
+// G-buffer cleared by the first and drawn over by the rest.
+std::vector<std::pair<ResourceRef, Use>> surfaceUses(const SurfaceTargets& t, bool first) {
+  std::vector<std::pair<ResourceRef, Use>> uses{{t.color.ref, Use::ColorReadWrite},
+                                                {t.depth.ref, first ? Use::DepthWrite : Use::DepthReadWrite}};
+  if (t.gbuffer()) {
+    for (const Target& g : {t.normal, t.ambient}) uses.push_back({g.ref, first ? Use::ColorWrite : Use::ColorReadWrite});
+  }
+  return uses;
 }
 
 constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the pool's hole
@@ -62,11 +101,14 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
 }
 
-gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize) {
+// A pipeline of an opaque surface: colour and depth, and the two G-buffer
+// targets, whose formats are left undefined when the frame has no AO.
+gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize, bool gbuffer) {
+  const vk::Format g = gbuffer ? kGbufferFormat : vk::Format::eUndefined;
   return {.vertexShader = vertexShader,
           .fragmentShader = fragmentShader,
           .pushSize = pushSize,
-          .colorFormats = {kHdrFormat},
+          .colorFormats = {kHdrFormat, g, g},
           .depthFormat = kDepthFormat,
           .depthTest = true,
           .depthWrite = true};
@@ -102,40 +144,37 @@ static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena
   }
 }
 
-ObjectPass::ObjectPass(const gpu::Context& ctx)
-    : spherePipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))),
-      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams)))) {}
+ObjectPass::ObjectPass(const gpu::Context& ctx, bool gbuffer)
+    : spherePipeline(gpu::createGraphicsPipeline(
+          ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer))),
+      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
 
-void ObjectPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                         const gpu::Image& depth, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
-                         const std::vector<shader::SphereParams>* spheres,
+void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
+                         const MediumDraw& medium, const std::vector<shader::SphereParams>* spheres,
                          const std::vector<shader::BoxParams>* boxes) const {
-  graph.pass("objects",
-             {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthReadWrite}, {medium.ref, Use::FragmentUniformRead}},
-             [this, &color, &depth, &frameUniforms, medium, spheres, boxes](PassContext& pc) {
-               drawOver(pc.cmd, color, depth, [&] {
-                 drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, *spheres,
-                             *boxes);
-               });
-             });
+  auto uses = surfaceUses(targets, false);
+  uses.push_back({medium.ref, Use::FragmentUniformRead});
+  graph.pass("objects", std::move(uses), [this, targets, &frameUniforms, medium, spheres, boxes](PassContext& pc) {
+    drawSurfaces(pc.cmd, targets, false, [&] {
+      drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, *spheres, *boxes);
+    });
+  });
 }
 
-PoolPass::PoolPass(const gpu::Context& ctx)
-    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0))),
-      floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
+PoolPass::PoolPass(const gpu::Context& ctx, bool gbuffer)
+    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
+      floor(gpu::createGraphicsPipeline(
+          ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {}
 
-void PoolPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                       const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
-                       const MediumDraw& medium) const {
-  graph.pass("pool",
-             {{colorRef, Use::ColorReadWrite},
-              {depthRef, Use::DepthReadWrite},
-              {pool.causticsRef, Use::FragmentSample},
-              {medium.ref, Use::FragmentUniformRead}},
-             [this, &color, &depth, &frameUniforms, pool, medium](PassContext& pc) {
-               drawOver(pc.cmd, color, depth,
-                        [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool, medium.buffer); });
-             });
+void PoolPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
+                       const PoolDraw& pool, const MediumDraw& medium) const {
+  auto uses = surfaceUses(targets, false);
+  uses.push_back({pool.causticsRef, Use::FragmentSample});
+  uses.push_back({medium.ref, Use::FragmentUniformRead});
+  graph.pass("pool", std::move(uses), [this, targets, &frameUniforms, pool, medium](PassContext& pc) {
+    drawSurfaces(pc.cmd, targets, false,
+                 [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool, medium.buffer); });
+  });
 }
 
 SkyPass::SkyPass(const gpu::Context& ctx)
@@ -172,35 +211,19 @@ void BackgroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu:
              });
 }
 
-GroundPass::GroundPass(const gpu::Context& ctx)
-    : pipeline(gpu::createGraphicsPipeline(ctx, {.vertexShader = "ground.vert",
-                                                 .fragmentShader = "ground.frag",
-                                                 .pushSize = sizeof(shader::GroundParams),
-                                                 .colorFormats = {kHdrFormat},
-                                                 .depthFormat = kDepthFormat,
-                                                 .depthTest = true,
-                                                 .depthWrite = true})) {}
+GroundPass::GroundPass(const gpu::Context& ctx, bool gbuffer)
+    : pipeline(gpu::createGraphicsPipeline(
+          ctx, opaque("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer))) {}
 
-void GroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-                         const gpu::Image& depth, const gpu::Buffer& frameUniforms,
+void GroundPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                          const shader::GroundParams& params) const {
-  graph.pass("ground", {{colorRef, Use::ColorReadWrite}, {depthRef, Use::DepthWrite}},
-             [this, &color, &depth, &frameUniforms, params](PassContext& pc) {
-               const auto& cmd = pc.cmd;
-               auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-               auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eClear,
-                                             vk::ClearValue{.depthStencil = {1.0f, 0}});
-               cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
-                                                    .layerCount = 1,
-                                                    .colorAttachmentCount = 1,
-                                                    .pColorAttachments = &colorTarget,
-                                                    .pDepthAttachment = &depthTarget});
-               gpu::bindPipeline(cmd, pipeline, params);
-               gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, pipeline, pc.descriptors);
-               setViewport(cmd, color.extent);
-               cmd.draw(kGroundVertices, 1, 0, 0);
-               cmd.endRendering();
-             });
+  graph.pass("ground", surfaceUses(targets, true), [this, targets, &frameUniforms, params](PassContext& pc) {
+    drawSurfaces(pc.cmd, targets, true, [&] {
+      gpu::bindPipeline(pc.cmd, pipeline, params);
+      gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(pc.cmd, pipeline, pc.descriptors);
+      pc.cmd.draw(kGroundVertices, 1, 0, 0);
+    });
+  });
 }
 
 WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth)

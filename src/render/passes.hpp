@@ -23,6 +23,23 @@ constexpr vk::Format kSkyFormat = vk::Format::eR16G16B16A16Sfloat;
 constexpr vk::Format kAovFormat = vk::Format::eR32G32B32A32Sfloat;
 constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
 constexpr uint32_t kCausticsSize = 512;  // texels per side of the caustics texture over the pool
+constexpr vk::Format kGbufferFormat = vk::Format::eR16G16B16A16Sfloat;  // view normal, ambient radiance
+constexpr vk::Format kAoFormat = vk::Format::eR32Sfloat;
+
+// An image and its name in the frame graph.
+struct Target {
+  ResourceRef ref;
+  const gpu::Image* image = nullptr;
+};
+
+// What the opaque surfaces (ground, pool, objects) draw into: colour and
+// depth, and, when the scene has AO, the G-buffer SSAO reads beside them: the
+// view-space normal and the ambient part of the colour. Without AO those two
+// have no image, and the surfaces' writes to them go nowhere.
+struct SurfaceTargets {
+  Target color, depth, normal, ambient;
+  bool gbuffer() const { return normal.image != nullptr; }
+};
 
 // Compute: the procedural sky into an equirectangular HDR texture.
 struct SkyPass {
@@ -39,11 +56,12 @@ struct BackgroundPass {
   gpu::Pipeline pipeline;
 };
 
-// Graphics: the checkered ground plane, depth tested.
+// Graphics: the checkered ground plane, depth tested; the first surface, so it
+// clears depth and the G-buffer.
 struct GroundPass {
-  explicit GroundPass(const gpu::Context& ctx);
-  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const shader::GroundParams& params) const;
+  GroundPass(const gpu::Context& ctx, bool gbuffer);
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
+               const shader::GroundParams& params) const;
   gpu::Pipeline pipeline;
 };
 
@@ -71,9 +89,8 @@ struct PoolDraw {
 
 // Graphics: the pool's inner walls and its terrain floor.
 struct PoolPass {
-  explicit PoolPass(const gpu::Context& ctx);
-  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
+  PoolPass(const gpu::Context& ctx, bool gbuffer);
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
                const MediumDraw& medium) const;
   gpu::Pipeline walls, floor;
 };
@@ -81,9 +98,8 @@ struct PoolPass {
 // Graphics: the scene's spheres and boxes, one draw each, where `spheres` and
 // `boxes` say they are when the frame records (spheres may move from frame to frame).
 struct ObjectPass {
-  explicit ObjectPass(const gpu::Context& ctx);
-  void declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
-               const gpu::Image& depth, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
+  ObjectPass(const gpu::Context& ctx, bool gbuffer);
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
                const std::vector<shader::SphereParams>* spheres, const std::vector<shader::BoxParams>* boxes) const;
   gpu::Pipeline spherePipeline, boxPipeline;
 };

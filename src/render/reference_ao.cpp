@@ -1,6 +1,7 @@
 #include "render/reference_ao.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,13 +20,13 @@ constexpr float kSurfaceOffset = 1e-4f;
 
 // The occluders of a frame: its triangles less the water (transparent, and not
 // an occluder for SSAO either) and the spheres' tessellations (cast exactly).
-ReferenceScene occluders(const scene::Scene& scene, const sim::WaterState* water, float time) {
+ReferenceScene occluders(const scene::Scene& scene, const sim::WaterState* water, float time, bool exactSpheres) {
   std::vector<scene::Mesh> opaque;
   for (auto& mesh : sceneMeshes(scene, water, time)) {
-    if (mesh.name == "water" || mesh.name.rfind("sphere", 0) == 0) continue;
+    if (mesh.name == "water" || (exactSpheres && mesh.name.rfind("sphere", 0) == 0)) continue;
     opaque.push_back(std::move(mesh));
   }
-  return ReferenceScene(opaque, scene::sceneAt(scene, time).spheres);
+  return ReferenceScene(opaque, exactSpheres ? scene::sceneAt(scene, time).spheres : std::vector<scene::Sphere>{});
 }
 
 // A 32-bit integer hash with good avalanche (Wellons' "lowbias32" constants):
@@ -73,6 +74,8 @@ void validate(std::span<const float> position, std::span<const float> normal, ui
   if (!(std::isfinite(options.radius) && options.radius > 0.0f))
     throw std::invalid_argument("reference AO: radius must be positive and finite, got " + std::to_string(options.radius));
   if (options.rays == 0) throw std::invalid_argument("reference AO: rays must be at least 1");
+  if (!options.originOffset.empty() && options.originOffset.size() != size_t(width) * height)
+    throw std::invalid_argument("reference AO: originOffset must have one value per pixel");
 }
 
 }  // namespace
@@ -81,8 +84,10 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
                                              std::span<const float> position, std::span<const float> normal,
                                              uint32_t width, uint32_t height, const ReferenceAoOptions& options) {
   validate(position, normal, width, height, options);
-  const ReferenceScene bvh = occluders(scene, water, time);
+  const ReferenceScene bvh = occluders(scene, water, time, options.exactSpheres);
   std::vector<float> ao(size_t(width) * height, 1.0f);
+  std::atomic<uint32_t> rowsDone{0};
+  uint32_t reported = 0;
 #pragma omp parallel for schedule(dynamic, 1)
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
@@ -94,7 +99,8 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
       if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) || !(length > 0.0f) || !std::isfinite(length))
         continue;
       const Basis basis = basisAbout(m / length);
-      const glm::vec3 origin = p + kSurfaceOffset * basis.n;
+      const float lift = options.originOffset.empty() ? kSurfaceOffset : std::max(kSurfaceOffset, options.originOffset[k]);
+      const glm::vec3 origin = p + lift * basis.n;
       const glm::vec2 offset = pixelOffset(k);
       uint32_t hits = 0;
       for (uint32_t i = 0; i < options.rays; ++i) {
@@ -105,6 +111,14 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
         if (hit.hit() && hit.distance < options.radius) ++hits;
       }
       ao[k] = 1.0f - float(hits) / float(options.rays);
+    }
+    const uint32_t done = ++rowsDone;
+    if (options.progress) {
+#pragma omp critical(reference_ao_progress)
+      if (done * 10 / height > reported) {
+        reported = done * 10 / height;
+        options.progress(double(done) / height);
+      }
     }
   }
   return ao;

@@ -1,6 +1,7 @@
 #include "render/renderer.hpp"
 
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 #include <optional>
 
 #include "gpu/submit.hpp"
@@ -11,6 +12,8 @@
 #include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 #include "render/sky_image.hpp"
+#include "render/ssao_model.hpp"
+#include "render/ssao_passes.hpp"
 #include "render/water_model.hpp"
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
@@ -21,7 +24,6 @@ struct Renderer::Resources {
   Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h, const RendererOptions& options)
       : skyPass(ctx),
         backgroundPass(ctx),
-        groundPass(ctx),
         tonemapPass(ctx),
         sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
                                                     .minFilter = vk::Filter::eLinear,
@@ -42,7 +44,12 @@ struct Renderer::Resources {
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
                                  "HDR color target")),
-        depth(gpu::createImage2D(ctx, {w, h}, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+        // With AO, SSAO samples the depth target and a frame may read it back.
+        depth(gpu::createImage2D(ctx, {w, h}, kDepthFormat,
+                                 scene.ao.enabled ? vk::ImageUsageFlagBits::eDepthStencilAttachment |
+                                                        vk::ImageUsageFlagBits::eSampled |
+                                                        vk::ImageUsageFlagBits::eTransferSrc
+                                                  : vk::ImageUsageFlagBits::eDepthStencilAttachment,
                                  "depth target")),
         ldr(gpu::createImage2D(ctx, {w, h}, kLdrFormat,
                                vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc, "LDR preview")),
@@ -79,6 +86,8 @@ struct Renderer::Resources {
     }
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
+    SurfaceTargets surfaces{{colorRef, &color}, {depthRef, &depth}, {}, {}};
+    if (scene.ao.enabled) declareGbuffer(ctx, w, h, surfaces);
     auto ldrRef = graph.image("ldr", ldr);
     colorReadbackRef = graph.buffer("color readback", colorReadback);
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
@@ -139,17 +148,21 @@ struct Renderer::Resources {
     }
     if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
-    groundPass.declare(graph, colorRef, color, depthRef, depth, uniforms, ground);
+    groundPass.emplace(ctx, surfaces.gbuffer());
+    groundPass->declare(graph, surfaces, uniforms, ground);
     if (poolDraw) {
-      poolPass.emplace(ctx);
-      poolPass->declare(graph, colorRef, color, depthRef, depth, uniforms, *poolDraw, mediumDraw);
+      poolPass.emplace(ctx, surfaces.gbuffer());
+      poolPass->declare(graph, surfaces, uniforms, *poolDraw, mediumDraw);
     }
     for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
     for (const auto& box : scene.boxes) boxes.push_back(boxParams(box));
     if (!spheres.empty() || !boxes.empty()) {
-      objectPass.emplace(ctx);
-      objectPass->declare(graph, colorRef, color, depthRef, depth, uniforms, mediumDraw, &spheres, &boxes);
+      objectPass.emplace(ctx, surfaces.gbuffer());
+      objectPass->declare(graph, surfaces, uniforms, mediumDraw, &spheres, &boxes);
     }
+    // AO of the opaque surfaces, before the water: the apparent-depth mode's
+    // copy of the pool then has it too.
+    if (scene.ao.enabled) declareAo(ctx, scene.ao, surfaces);
     if (water) {
       std::optional<Underwater> underwater;
       if (scene.render.refraction == "apparent") {
@@ -189,9 +202,62 @@ struct Renderer::Resources {
     declareReadback(graph, "readback ldr", ldrRef, ldr, ldrReadbackRef, ldrReadback);
   }
 
+  // The G-buffer targets beside colour and depth, with their readbacks.
+  void declareGbuffer(const gpu::Context& ctx, uint32_t w, uint32_t h, SurfaceTargets& surfaces) {
+    const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage;
+    gbufferNormal = gpu::createImage2D(ctx, {w, h}, kGbufferFormat, usage | vk::ImageUsageFlagBits::eTransferSrc,
+                                       "G-buffer view normal");
+    gbufferAmbient = gpu::createImage2D(ctx, {w, h}, kGbufferFormat, usage, "G-buffer ambient radiance");
+    surfaces.normal = {graph.image("view normal", gbufferNormal), &gbufferNormal};
+    surfaces.ambient = {graph.image("ambient", gbufferAmbient), &gbufferAmbient};
+  }
+
+  // The SSAO passes and their images, and the readbacks a frame asking for
+  // its AO uses (declared here, so the depth read back is the opaque
+  // surfaces', before the water draws over it).
+  void declareAo(const gpu::Context& ctx, const scene::Ao& ao, const SurfaceTargets& surfaces) {
+    const vk::Extent2D frame = surfaces.color.image->extent, low = aoExtent(ao, frame.width, frame.height);
+    const auto usage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
+    auto makeImage = [&](gpu::Image& image, vk::Extent2D extent, const char* name) -> Target {
+      image = gpu::createImage2D(ctx, extent, kAoFormat, usage, name);
+      return {graph.image(name, image), &image};
+    };
+    AoImages images;
+    images.raw = makeImage(aoRaw, low, "AO raw");
+    if (ao.blur != "off") {
+      images.blurX = makeImage(aoBlurX, low, "AO blurred in x");
+      images.blurred = makeImage(aoBlurred, low, "AO blurred");
+    }
+    if (low != frame) images.full = makeImage(aoFull, frame, "AO upsampled");
+    const shader::SsaoKernel kernel = ssaoKernel(ao);
+    ssaoKernelBuffer = gpu::createFilledBuffer(ctx, &kernel, sizeof(kernel), vk::BufferUsageFlagBits::eUniformBuffer,
+                                               gpu::MemoryUse::Upload, "SSAO kernel");
+    ssaoPasses.emplace(ctx);
+    ssaoPasses->declare(graph, surfaces, images, uniforms, ssaoKernelBuffer, *nearestSampler, ao);
+
+    aoExtentLow = low;
+    const auto readbackUsage = vk::BufferUsageFlagBits::eTransferDst;
+    const vk::DeviceSize pixels = vk::DeviceSize(frame.width) * frame.height;
+    aoReadback = gpu::createBuffer(ctx, pixels * 4, readbackUsage, gpu::MemoryUse::Readback, "AO readback");
+    aoRawReadback = gpu::createBuffer(ctx, vk::DeviceSize(low.width) * low.height * 4, readbackUsage,
+                                      gpu::MemoryUse::Readback, "raw AO readback");
+    depthReadback = gpu::createBuffer(ctx, pixels * 4, readbackUsage, gpu::MemoryUse::Readback, "G-buffer depth readback");
+    viewNormalReadback = gpu::createBuffer(ctx, pixels * 8, readbackUsage, gpu::MemoryUse::Readback,
+                                           "G-buffer normal readback");
+    aoReadbackRefs = {graph.buffer("AO readback", aoReadback), graph.buffer("raw AO readback", aoRawReadback),
+                      graph.buffer("G-buffer depth readback", depthReadback),
+                      graph.buffer("G-buffer normal readback", viewNormalReadback)};
+    const Target result = images.result();
+    declareReadback(graph, "readback ao", result.ref, *result.image, aoReadbackRefs[0], aoReadback);
+    declareReadback(graph, "readback ao raw", images.raw.ref, aoRaw, aoReadbackRefs[1], aoRawReadback);
+    declareReadback(graph, "readback depth", surfaces.depth.ref, depth, aoReadbackRefs[2], depthReadback);
+    declareReadback(graph, "readback view normal", surfaces.normal.ref, gbufferNormal, aoReadbackRefs[3],
+                    viewNormalReadback);
+  }
+
   SkyPass skyPass;
   BackgroundPass backgroundPass;
-  GroundPass groundPass;
+  std::optional<GroundPass> groundPass;
   TonemapPass tonemapPass;
   vk::raii::Sampler sampler, nearestSampler, clampSampler;
   gpu::Image sky, color, depth, ldr;
@@ -213,6 +279,12 @@ struct Renderer::Resources {
   std::vector<shader::BoxParams> boxes;
   std::optional<CameraMediumPass> cameraMediumPass;
   gpu::Buffer medium;
+  // Ambient occlusion, when the scene has it on.
+  gpu::Image gbufferNormal, gbufferAmbient, aoRaw, aoBlurX, aoBlurred, aoFull;
+  gpu::Buffer ssaoKernelBuffer, aoReadback, aoRawReadback, depthReadback, viewNormalReadback;
+  std::vector<ResourceRef> aoReadbackRefs;  // AO, raw AO, depth, view normal
+  vk::Extent2D aoExtentLow;
+  std::optional<SsaoPasses> ssaoPasses;
   // Arbitrary output variables, when the renderer was made with them.
   std::optional<AovPass> aovPass;
   gpu::Image aovNormal, aovPosition, aovDepth;
@@ -242,6 +314,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
   out.worldToCamera = uniforms.view;
   out.worldToNDC = uniforms.viewProjection;
+  out.inverseProjection = uniforms.inverseProjection;
 
   if (res_->water) {
     // Frame N shows the water after N frames of simulation from the scene's
@@ -269,8 +342,12 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     requested.push_back(res_->normalReadbackRef);
     requested.push_back(res_->positionReadbackRef);
   }
+  if (request.ao) {
+    if (!res_->ssaoPasses) throw std::logic_error("AO requested from a renderer of a scene without it");
+    requested.insert(requested.end(), res_->aoReadbackRefs.begin(), res_->aoReadbackRefs.end());
+  }
 
-  gpu::GpuTimer timer(ctx_, 16);
+  gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it
   gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) {
     timer.reset(cmd);
@@ -295,6 +372,24 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     out.position.resize(pixels * 4);
     std::memcpy(out.normal.data(), res_->normalReadback.mapped, pixels * 16);
     std::memcpy(out.position.data(), res_->positionReadback.mapped, pixels * 16);
+  }
+  if (request.ao) {
+    const vk::Extent2D low = res_->aoExtentLow;
+    out.aoWidth = low.width;
+    out.aoHeight = low.height;
+    auto copyFloats = [](std::vector<float>& to, const gpu::Buffer& from, size_t count) {
+      to.resize(count);
+      std::memcpy(to.data(), from.mapped, count * sizeof(float));
+    };
+    copyFloats(out.ao, res_->aoReadback, pixels);
+    copyFloats(out.aoRaw, res_->aoRawReadback, size_t(low.width) * low.height);
+    copyFloats(out.gbufferDepth, res_->depthReadback, pixels);
+    out.gbufferNormal.resize(pixels * 4);
+    const auto* halves = static_cast<const glm::uint64*>(res_->viewNormalReadback.mapped);
+    for (size_t p = 0; p < pixels; ++p) {
+      const glm::vec4 n = glm::unpackHalf4x16(halves[p]);
+      for (int c = 0; c < 4; ++c) out.gbufferNormal[p * 4 + c] = n[c];
+    }
   }
   return out;
 }

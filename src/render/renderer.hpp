@@ -15,6 +15,7 @@ struct FrameRequest {
   bool hdr = true;    // read back the linear RGBA image
   bool ldr = false;   // read back the tonemapped sRGB preview
   bool aovs = false;  // read back world normal, world position and view depth (needs RendererOptions::aovs)
+  bool ao = false;    // read back the AO and the G-buffer it came from (needs a scene with AO on)
 };
 
 struct RendererOptions {
@@ -28,9 +29,16 @@ struct RenderedFrame {
   std::vector<std::uint8_t> srgb; // RGBA8 sRGB preview, when requested
   std::vector<float> normal;      // xyz0 world normal per pixel, when AOVs are requested (0 where nothing is hit)
   std::vector<float> position;    // xyz world position and w view depth Z (infinite where nothing is hit)
+  // With FrameRequest::ao: the AO (frame size, after blur and upsample), the
+  // unblurred SSAO at the AO resolution (aoWidth x aoHeight), and the opaque
+  // surfaces' G-buffer it was computed from: the depth buffer's values (1 where
+  // no surface) and xyz0 view-space normals.
+  std::vector<float> ao, aoRaw, gbufferDepth, gbufferNormal;
+  uint32_t aoWidth = 0, aoHeight = 0;
   std::vector<RecordedPass> passes;
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
+  glm::mat4 inverseProjection{1.0f};
 };
 
 // Renders a scene offscreen at a fixed size. The frame graph is declared once;

@@ -4,6 +4,7 @@
 #include "shared/ssao.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -28,7 +29,41 @@ void requireRange(float value, float lo, float hi, const char* field) {
   }
 }
 
+void requireOneOf(const std::string& value, std::initializer_list<const char*> allowed, const char* field) {
+  std::string names;
+  for (const char* a : allowed) {
+    if (value == a) return;
+    names += (names.empty() ? "" : ", ") + std::string(a);
+  }
+  throw std::runtime_error(std::string(field) + " must be one of " + names + ", got '" + value + "'");
+}
+
 }  // namespace
+
+Ao aoPreset(const std::string& name) {
+  Ao ao;  // balanced
+  if (name == "balanced") return ao;
+  if (name == "fast") {
+    ao.kernelSize = 8;
+    ao.resolution = "half";
+    return ao;
+  }
+  if (name == "quality") {
+    ao.kernelSize = 32;
+    ao.blurTaps = 6;
+    return ao;
+  }
+  if (name == "baseline") {  // LearnOpenGL: 64 random samples, 4x4 random noise, 4x4 box blur
+    ao.pattern = "random";
+    ao.depthLookup = "nearest";
+    ao.kernelSize = 64;
+    ao.noiseSize = 4;
+    ao.blur = "box";
+    ao.blurTaps = 4;
+    return ao;
+  }
+  throw std::invalid_argument("unknown AO preset '" + name + "' (fast, balanced, quality, baseline)");
+}
 
 Scene defaultScene() { return Scene{}; }
 
@@ -128,15 +163,16 @@ void validateScene(const Scene& s) {
     requireNonNegative(box.albedo, "boxes[].albedo");
   }
   const Ao& ao = s.ao;
+  requireOneOf(ao.pattern, {"hammersley", "random"}, "ao.pattern");
   requireRange(float(ao.kernelSize), 1.0f, float(TP_MAX_SSAO_KERNEL), "ao.kernel_size");
-  requireRange(ao.radius, 1e-4f, 1e3f, "ao.radius");
+  requireRange(ao.radius, 1e-3f, 1e3f, "ao.radius");
   requireRange(ao.bias, 0.0f, 1e3f, "ao.bias");
   requireRange(float(ao.noiseSize), 1.0f, 8.0f, "ao.noise_size");
-  if (ao.blur != "off" && ao.blur != "box" && ao.blur != "bilateral") {
-    throw std::runtime_error("ao.blur must be off, box or bilateral, got '" + ao.blur + "'");
-  }
+  requireOneOf(ao.depthLookup, {"interpolated", "nearest"}, "ao.depth_lookup");
+  requireOneOf(ao.blur, {"off", "box", "bilateral"}, "ao.blur");
   requireRange(float(ao.blurTaps), 1.0f, 32.0f, "ao.blur_taps");
   requireRange(ao.blurDepthTolerance, 1e-6f, 10.0f, "ao.blur_depth_tolerance");
+  requireOneOf(ao.resolution, {"full", "half"}, "ao.resolution");
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
     requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");

@@ -127,18 +127,28 @@ struct Render {
 };
 
 // Screen-space ambient occlusion of the sky's light (render/ssao_model.cpp
-// turns it into the shaders' parameters).
+// turns it into the shaders' parameters). The defaults are the balanced
+// preset; aoPreset gives each preset.
 struct Ao {
-  bool enabled = false;
-  unsigned kernelSize = 16;    // hemisphere samples per pixel (Hammersley), 1..64
+  bool enabled = true;
+  std::string pattern = "hammersley";  // kernel and noise tile: hammersley | random (the LearnOpenGL baseline)
+  unsigned kernelSize = 16;    // hemisphere samples per pixel, 1..64
   float radius = 0.5f;         // metres
   float bias = 0.025f;         // metres: depth difference that does not count as occlusion
   unsigned noiseSize = 4;      // side of the rotation tile in pixels, 1..8
+  std::string depthLookup = "interpolated";  // depth at a sample: interpolated | nearest (the original's)
   std::string blur = "bilateral";  // off | box | bilateral
   unsigned blurTaps = 4;       // per direction of the separable blur
-  float blurDepthTolerance = 0.05f;  // bilateral: neighbours within this fraction of the pixel's view depth
+  float blurDepthTolerance = 0.05f;  // bilateral blur and upsample: neighbours within this fraction of the view depth
+  std::string resolution = "full";   // full | half (then a depth-aware upsample)
   bool operator==(const Ao&) const = default;
 };
+
+// The AO settings of a preset: fast | balanced | quality, chosen from the
+// measured curve of run time against error (README, "Ambient occlusion"), or
+// baseline, the LearnOpenGL-style SSAO they are measured against. Throws
+// std::invalid_argument naming the presets on any other name.
+Ao aoPreset(const std::string& name);
 
 struct Scene {
   Camera camera;

@@ -200,14 +200,27 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.vec3("albedo", box.albedo);
   });
   top.object("ao", [&](ObjectReader& r) {
+    // A preset first, then any key given beside it overrides that key alone.
+    std::string preset;
+    r.text("preset", preset);
+    if (!preset.empty()) {
+      try {
+        s.ao = aoPreset(preset);
+      } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(origin + ": ao.preset: " + e.what());
+      }
+    }
     r.flag("enabled", s.ao.enabled);
+    r.text("pattern", s.ao.pattern);
     r.count("kernel_size", s.ao.kernelSize);
     r.number("radius", s.ao.radius);
     r.number("bias", s.ao.bias);
     r.count("noise_size", s.ao.noiseSize);
+    r.text("depth_lookup", s.ao.depthLookup);
     r.text("blur", s.ao.blur);
     r.count("blur_taps", s.ao.blurTaps);
     r.number("blur_depth_tolerance", s.ao.blurDepthTolerance);
+    r.text("resolution", s.ao.resolution);
   });
   top.object("render", [&](ObjectReader& r) {
     r.number("exposure", s.render.exposure);
