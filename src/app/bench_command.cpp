@@ -34,12 +34,26 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   water->add_option("--csv", o.water.csv, "CSV output")->type_name("PATH")->capture_default_str();
   water->add_option("--plot", o.water.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   addGpuOptions(water, o.water.validate, o.water.device);
+  CLI::App* ssao = bench->add_subcommand(
+      "ssao", "SSAO settings and presets on one frame: GPU ms of the AO passes against error from ray-traced AO");
+  ssao->add_option("--scene", o.ssao.scenePath, "Scene file (JSON); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  ssao->add_option("--resolution", o.ssao.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  ssao->add_option("--frame", o.ssao.frame, "Frame of the water to render")->capture_default_str();
+  ssao->add_option("--repeats", o.ssao.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ssao->add_option("--csv", o.ssao.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  ssao->add_option("--plot", o.ssao.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(ssao, o.ssao.validate, o.ssao.device);
   return bench;
 }
 
 int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
+  if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   return 2;
 }
 

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_sim.hpp"
+#include "app/bench_ssao.hpp"
 #include "app/bench_water.hpp"
 
 namespace tp::app {
@@ -9,9 +10,10 @@ namespace tp::app {
 struct BenchOptions {
   BenchSimOptions sim;
   BenchWaterOptions water;
+  BenchSsaoOptions ssao;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, water).
+// Adds `tidepool bench` with its subcommands (sim, water, ssao).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

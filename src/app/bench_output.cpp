@@ -1,6 +1,9 @@
 #include "app/bench_output.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "io/atomic_file.hpp"
 
@@ -13,6 +16,20 @@ void checkBenchOutputs(const std::string& csv, const std::string& plot) {
     io::requireExtension(plot, ".png");
     io::checkWritable(plot);
   }
+}
+
+Resolution parseResolution(const std::string& text, const std::string& bench) {
+  unsigned w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096) {
+    throw std::runtime_error(bench + ": resolution '" + text + "' is not WxH with sides 8 to 4096");
+  }
+  return {w, h};
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values.empty() ? std::nan("") : values[values.size() / 2];
 }
 
 std::string formatNumber(const char* format, double x) {

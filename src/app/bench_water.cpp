@@ -42,24 +42,6 @@ std::vector<View> benchViews(const scene::Scene& s) {
   return {{"scene", std::nullopt}, {"overhead", overhead}, {"grazing", grazing}};
 }
 
-struct Resolution {
-  uint32_t width = 0, height = 0;
-};
-
-Resolution parseResolution(const std::string& text) {
-  unsigned w = 0, h = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096) {
-    throw std::runtime_error("bench water: resolution '" + text + "' is not WxH with sides 8 to 4096");
-  }
-  return {w, h};
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? std::nan("") : v[v.size() / 2];
-}
-
 struct Timing {
   double waterMs = 0.0, underwaterMs = 0.0, frameMs = 0.0;
 };
@@ -134,7 +116,7 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
 int runBenchWater(const BenchWaterOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   std::vector<Resolution> resolutions;
-  for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r));
+  for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r, "bench water"));
   scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
   base.render.caustics = false;  // the reference leaves them out
   if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");

@@ -33,9 +33,10 @@ struct Target {
 };
 
 // What the opaque surfaces (ground, pool, objects) draw into: colour and
-// depth, and, when the scene has AO, the G-buffer SSAO reads beside them: the
-// view-space normal and the ambient part of the colour. Without AO those two
-// have no image, and the surfaces' writes to them go nowhere.
+// depth, and the G-buffer SSAO reads beside them: the view-space normal and
+// the ambient part of the colour. A pass declared without G-buffer images
+// draws null views there (the validation layer warns of the outputs that then
+// have no attachment, so the renderer always makes them).
 struct SurfaceTargets {
   Target color, depth, normal, ambient;
   bool gbuffer() const { return normal.image != nullptr; }

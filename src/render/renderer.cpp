@@ -87,7 +87,10 @@ struct Renderer::Resources {
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
     SurfaceTargets surfaces{{colorRef, &color}, {depthRef, &depth}, {}, {}};
-    if (scene.ao.enabled) declareGbuffer(ctx, w, h, surfaces);
+    // Drawn even without AO: a pipeline whose G-buffer formats are undefined
+    // draws without warnings on no validation layer version we have (the
+    // fragment outputs then have no attachment); skipping it is issue 6's.
+    declareGbuffer(ctx, w, h, surfaces);
     auto ldrRef = graph.image("ldr", ldr);
     colorReadbackRef = graph.buffer("color readback", colorReadback);
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);

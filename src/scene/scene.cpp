@@ -44,7 +44,6 @@ Ao aoPreset(const std::string& name) {
   Ao ao;  // balanced
   if (name == "balanced") return ao;
   if (name == "fast") {
-    ao.kernelSize = 8;
     ao.resolution = "half";
     return ao;
   }

@@ -132,7 +132,7 @@ struct Render {
 struct Ao {
   bool enabled = true;
   std::string pattern = "hammersley";  // kernel and noise tile: hammersley | random (the LearnOpenGL baseline)
-  unsigned kernelSize = 16;    // hemisphere samples per pixel, 1..64
+  unsigned kernelSize = 8;     // hemisphere samples per pixel, 1..64
   float radius = 0.5f;         // metres
   float bias = 0.025f;         // metres: depth difference that does not count as occlusion
   unsigned noiseSize = 4;      // side of the rotation tile in pixels, 1..8
