@@ -1,13 +1,13 @@
 #include "render/reference_ao.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "render/hammersley.hpp"
 #include "render/reference_scene.hpp"
+#include "render/row_progress.hpp"
 #include "render/water_model.hpp"
 
 namespace tp::render {
@@ -86,8 +86,7 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
   validate(position, normal, width, height, options);
   const ReferenceScene bvh = occluders(scene, water, time, options.exactSpheres);
   std::vector<float> ao(size_t(width) * height, 1.0f);
-  std::atomic<uint32_t> rowsDone{0};
-  uint32_t reported = 0;
+  RowProgress progress(height, options.progress);
 #pragma omp parallel for schedule(dynamic, 1)
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
@@ -112,14 +111,7 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
       }
       ao[k] = 1.0f - float(hits) / float(options.rays);
     }
-    const uint32_t done = ++rowsDone;
-    if (options.progress) {
-#pragma omp critical(reference_ao_progress)
-      if (done * 10 / height > reported) {
-        reported = done * 10 / height;
-        options.progress(double(done) / height);
-      }
-    }
+    progress.rowDone();
   }
   return ao;
 }

@@ -1,6 +1,5 @@
 #include "render/reference_tracer.hpp"
 
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -10,6 +9,7 @@
 #include "render/hammersley.hpp"
 #include "render/pool_model.hpp"
 #include "render/reference_scene.hpp"
+#include "render/row_progress.hpp"
 #include "render/sky_image.hpp"
 #include "render/sky_model.hpp"
 #include "render/water_model.hpp"
@@ -216,8 +216,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
     origin = glm::vec3(nearPoint) / nearPoint.w;
     dir = glm::normalize(origin - eye);
   };
-  std::atomic<uint32_t> rowsDone{0};
-  uint32_t reported = 0;
+  RowProgress progress(height, options.progress);
 #pragma omp parallel for schedule(dynamic, 1)
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
@@ -240,14 +239,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       out.rgba[k * 4 + 3] = 1.0f;
       if (std::isfinite(first.position.x)) out.position[k * 4 + 3] = -(uniforms.view * glm::vec4(first.position, 1.0f)).z;
     }
-    const uint32_t done = ++rowsDone;
-    if (options.progress) {
-#pragma omp critical(reference_progress)
-      if (done * 10 / height > reported) {
-        reported = done * 10 / height;
-        options.progress(double(done) / height);
-      }
-    }
+    progress.rowDone();
   }
   return out;
 }
