@@ -42,13 +42,11 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
 
 // Renders over the opaque surfaces' targets. The first surface pass
 // (`first`) clears depth and the G-buffer (zero ambient: AO takes nothing from
-// pixels no surface covers); later ones load them. Absent G-buffer targets
-// (no AO) are null views, which take no writes.
+// pixels no surface covers); later ones load them.
 void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, bool first,
                   const std::function<void()>& draw) {
   const auto load = first ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eLoad;
   auto gbufferTarget = [&](const Target& target) {
-    if (!target.image) return vk::RenderingAttachmentInfo{.imageView = nullptr};
     return attachment(*target.image, vk::ImageLayout::eColorAttachmentOptimal, load,
                       vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
   };
@@ -73,9 +71,7 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, b
 std::vector<std::pair<ResourceRef, Use>> surfaceUses(const SurfaceTargets& t, bool first) {
   std::vector<std::pair<ResourceRef, Use>> uses{{t.color.ref, Use::ColorReadWrite},
                                                 {t.depth.ref, first ? Use::DepthWrite : Use::DepthReadWrite}};
-  if (t.gbuffer()) {
-    for (const Target& g : {t.normal, t.ambient}) uses.push_back({g.ref, first ? Use::ColorWrite : Use::ColorReadWrite});
-  }
+  for (const Target& g : {t.normal, t.ambient}) uses.push_back({g.ref, first ? Use::ColorWrite : Use::ColorReadWrite});
   return uses;
 }
 
@@ -101,14 +97,12 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
 }
 
-// A pipeline of an opaque surface: colour and depth, and the two G-buffer
-// targets, whose formats are left undefined when the frame has no AO.
-gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize, bool gbuffer) {
-  const vk::Format g = gbuffer ? kGbufferFormat : vk::Format::eUndefined;
+// A pipeline of an opaque surface: colour, the two G-buffer targets, depth.
+gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize) {
   return {.vertexShader = vertexShader,
           .fragmentShader = fragmentShader,
           .pushSize = pushSize,
-          .colorFormats = {kHdrFormat, g, g},
+          .colorFormats = {kHdrFormat, kGbufferFormat, kGbufferFormat},
           .depthFormat = kDepthFormat,
           .depthTest = true,
           .depthWrite = true};
@@ -144,10 +138,9 @@ static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena
   }
 }
 
-ObjectPass::ObjectPass(const gpu::Context& ctx, bool gbuffer)
-    : spherePipeline(gpu::createGraphicsPipeline(
-          ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer))),
-      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
+ObjectPass::ObjectPass(const gpu::Context& ctx)
+    : spherePipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))),
+      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams)))) {}
 
 void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                          const MediumDraw& medium, const std::vector<shader::SphereParams>* spheres,
@@ -161,10 +154,9 @@ void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const
   });
 }
 
-PoolPass::PoolPass(const gpu::Context& ctx, bool gbuffer)
-    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
-      floor(gpu::createGraphicsPipeline(
-          ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {}
+PoolPass::PoolPass(const gpu::Context& ctx)
+    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0))),
+      floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
 
 void PoolPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                        const PoolDraw& pool, const MediumDraw& medium) const {
@@ -211,9 +203,8 @@ void BackgroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu:
              });
 }
 
-GroundPass::GroundPass(const gpu::Context& ctx, bool gbuffer)
-    : pipeline(gpu::createGraphicsPipeline(
-          ctx, opaque("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer))) {}
+GroundPass::GroundPass(const gpu::Context& ctx)
+    : pipeline(gpu::createGraphicsPipeline(ctx, opaque("ground.vert", "ground.frag", sizeof(shader::GroundParams)))) {}
 
 void GroundPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                          const shader::GroundParams& params) const {

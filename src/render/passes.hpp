@@ -34,12 +34,11 @@ struct Target {
 
 // What the opaque surfaces (ground, pool, objects) draw into: colour and
 // depth, and the G-buffer SSAO reads beside them: the view-space normal and
-// the ambient part of the colour. A pass declared without G-buffer images
-// draws null views there (the validation layer warns of the outputs that then
-// have no attachment, so the renderer always makes them).
+// the ambient part of the colour. Always all four, AO or not: undefined
+// G-buffer formats with null views draw, but the validation layer warns of
+// fragment outputs left without an attachment.
 struct SurfaceTargets {
   Target color, depth, normal, ambient;
-  bool gbuffer() const { return normal.image != nullptr; }
 };
 
 // Compute: the procedural sky into an equirectangular HDR texture.
@@ -60,7 +59,7 @@ struct BackgroundPass {
 // Graphics: the checkered ground plane, depth tested; the first surface, so it
 // clears depth and the G-buffer.
 struct GroundPass {
-  GroundPass(const gpu::Context& ctx, bool gbuffer);
+  explicit GroundPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                const shader::GroundParams& params) const;
   gpu::Pipeline pipeline;
@@ -90,7 +89,7 @@ struct PoolDraw {
 
 // Graphics: the pool's inner walls and its terrain floor.
 struct PoolPass {
-  PoolPass(const gpu::Context& ctx, bool gbuffer);
+  explicit PoolPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
                const MediumDraw& medium) const;
   gpu::Pipeline walls, floor;
@@ -99,7 +98,7 @@ struct PoolPass {
 // Graphics: the scene's spheres and boxes, one draw each, where `spheres` and
 // `boxes` say they are when the frame records (spheres may move from frame to frame).
 struct ObjectPass {
-  ObjectPass(const gpu::Context& ctx, bool gbuffer);
+  explicit ObjectPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
                const std::vector<shader::SphereParams>* spheres, const std::vector<shader::BoxParams>* boxes) const;
   gpu::Pipeline spherePipeline, boxPipeline;

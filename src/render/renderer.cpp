@@ -24,6 +24,7 @@ struct Renderer::Resources {
   Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h, const RendererOptions& options)
       : skyPass(ctx),
         backgroundPass(ctx),
+        groundPass(ctx),
         tonemapPass(ctx),
         sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
                                                     .minFilter = vk::Filter::eLinear,
@@ -87,9 +88,7 @@ struct Renderer::Resources {
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
     SurfaceTargets surfaces{{colorRef, &color}, {depthRef, &depth}, {}, {}};
-    // Drawn even without AO: a pipeline whose G-buffer formats are undefined
-    // draws without warnings on no validation layer version we have (the
-    // fragment outputs then have no attachment); skipping it is issue 6's.
+    // Drawn even without AO (SurfaceTargets says why); skipping it is issue 6's.
     declareGbuffer(ctx, w, h, surfaces);
     auto ldrRef = graph.image("ldr", ldr);
     colorReadbackRef = graph.buffer("color readback", colorReadback);
@@ -151,16 +150,15 @@ struct Renderer::Resources {
     }
     if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
-    groundPass.emplace(ctx, surfaces.gbuffer());
-    groundPass->declare(graph, surfaces, uniforms, ground);
+    groundPass.declare(graph, surfaces, uniforms, ground);
     if (poolDraw) {
-      poolPass.emplace(ctx, surfaces.gbuffer());
+      poolPass.emplace(ctx);
       poolPass->declare(graph, surfaces, uniforms, *poolDraw, mediumDraw);
     }
     for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
     for (const auto& box : scene.boxes) boxes.push_back(boxParams(box));
     if (!spheres.empty() || !boxes.empty()) {
-      objectPass.emplace(ctx, surfaces.gbuffer());
+      objectPass.emplace(ctx);
       objectPass->declare(graph, surfaces, uniforms, mediumDraw, &spheres, &boxes);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -260,7 +258,7 @@ struct Renderer::Resources {
 
   SkyPass skyPass;
   BackgroundPass backgroundPass;
-  std::optional<GroundPass> groundPass;
+  GroundPass groundPass;
   TonemapPass tonemapPass;
   vk::raii::Sampler sampler, nearestSampler, clampSampler;
   gpu::Image sky, color, depth, ldr;
