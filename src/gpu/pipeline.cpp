@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "gpu/commands.hpp"
 #include "gpu/spirv_library.hpp"
 
 namespace tp::gpu {
@@ -157,7 +158,7 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
 
 void dispatchCovering(const vk::raii::CommandBuffer& cmd, const Pipeline& p, uint32_t x, uint32_t y, uint32_t z) {
   auto groups = [](uint32_t n, uint32_t local) { return (n + local - 1) / local; };
-  cmd.dispatch(groups(x, p.localSize[0]), groups(y, p.localSize[1]), groups(z, p.localSize[2]));
+  dispatch(cmd, groups(x, p.localSize[0]), groups(y, p.localSize[1]), groups(z, p.localSize[2]));
 }
 
 }  // namespace tp::gpu

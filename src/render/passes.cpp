@@ -1,5 +1,6 @@
 #include "render/passes.hpp"
 
+#include "gpu/commands.hpp"
 #include "gpu/descriptors.hpp"
 #include "render/objects_model.hpp"
 
@@ -87,14 +88,14 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   wallWrites.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
   if (medium) wallWrites.uniformBuffer(3, *medium);
   wallWrites.bind(cmd, walls, arena);
-  cmd.draw(kWallVertices, 1, 0, 0);
+  gpu::draw(cmd, kWallVertices);
   gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
   gpu::DescriptorWrites writes;
   writes.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
   if (medium) writes.sampledImage(2, *pool.caustics, pool.causticsSampler).uniformBuffer(3, *medium);
   writes.bind(cmd, floor, arena);
   cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
-  cmd.drawIndexed(pool.floorIndexCount, 1, 0, 0, 0);
+  gpu::drawIndexed(cmd, pool.floorIndexCount);
 }
 
 // A pipeline of an opaque surface: colour, the two G-buffer targets, depth.
@@ -126,14 +127,14 @@ static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena
     bindShared(spheres);
     for (const auto& sphere : sphereDraws) {
       gpu::bindPipeline(cmd, spheres, sphere);
-      cmd.draw(sphere.tessellation.x * sphere.tessellation.y * 6, 1, 0, 0);
+      gpu::draw(cmd, sphere.tessellation.x * sphere.tessellation.y * 6);
     }
   }
   if (!boxDraws.empty()) {
     bindShared(boxes);
     for (const auto& box : boxDraws) {
       gpu::bindPipeline(cmd, boxes, box);
-      cmd.draw(kBoxVertices, 1, 0, 0);
+      gpu::draw(cmd, kBoxVertices);
     }
   }
 }
@@ -198,7 +199,7 @@ void BackgroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu:
                cmd.bindPipeline(pipeline.bindPoint, *pipeline.pipeline);
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).sampledImage(1, sky, sampler).bind(cmd, pipeline, pc.descriptors);
                setViewport(cmd, color.extent);
-               cmd.draw(3, 1, 0, 0);
+               gpu::draw(cmd, 3);
                cmd.endRendering();
              });
 }
@@ -212,7 +213,7 @@ void GroundPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const
     drawSurfaces(pc.cmd, targets, true, [&] {
       gpu::bindPipeline(pc.cmd, pipeline, params);
       gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(pc.cmd, pipeline, pc.descriptors);
-      pc.cmd.draw(kGroundVertices, 1, 0, 0);
+      gpu::draw(pc.cmd, kGroundVertices);
     });
   });
 }
@@ -229,7 +230,7 @@ WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth)
 
 static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water) {
   cmd.bindIndexBuffer(water.indices->handle(), 0, vk::IndexType::eUint32);
-  cmd.drawIndexed(water.indexCount, 1, 0, 0, 0);
+  gpu::drawIndexed(cmd, water.indexCount);
 }
 
 void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu::Image& color, ResourceRef depthRef,
@@ -348,7 +349,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                setViewport(cmd, normal.extent);
                gpu::bindPipeline(cmd, groundPipeline, ground);
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
-               cmd.draw(kGroundVertices, 1, 0, 0);
+               gpu::draw(cmd, kGroundVertices);
                if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw, nullptr);
                drawObjects(cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, nullptr, *spheres, *boxes);
                if (waterDraw) {
@@ -392,7 +393,7 @@ void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const 
         .storageBuffer(1, *medium.buffer)
         .storageBuffer(2, water.state())
         .bind(pc.cmd, pipeline, pc.descriptors);
-    pc.cmd.dispatch(1, 1, 1);
+    gpu::dispatch(pc.cmd, 1);
   });
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "gpu/barriers.hpp"
+#include "gpu/commands.hpp"
 #include "gpu/submit.hpp"
 #include "gpu/transfer.hpp"
 
@@ -105,7 +106,7 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps,
     gpu::bindSet(cmd, pipeline, stepSets_[current_]);
     if (kernel_ == StepKernel::Tiled) {
       const uint32_t groups = (n + inner - 1) / inner;
-      cmd.dispatch(groups, groups, 1);
+      gpu::dispatch(cmd, groups, groups);
     } else {
       gpu::dispatchCovering(cmd, pipeline, n, n);
     }
