@@ -8,18 +8,44 @@ set(TIDEPOOL_SHADER_DIR ${CMAKE_SOURCE_DIR}/shaders_glsl)
 set(TIDEPOOL_SPIRV_DIR ${CMAKE_BINARY_DIR}/spirv)
 set(TIDEPOOL_COMMITTED_SPIRV_DIR ${CMAKE_SOURCE_DIR}/spirv)
 
+# Sources compiled a second time with a macro defined, as
+# SOURCE:MACRO:VARIANT (the variant's module is VARIANT.spv). The opaque
+# surfaces' colour-only variants leave out the G-buffer outputs, for frames
+# without AO: outputs with no attachment behind them draw, but the
+# validation layer warns of each.
+set(TIDEPOOL_SHADER_VARIANTS
+  ground.frag:TP_COLOR_ONLY:ground.color_only.frag
+  pool_walls.frag:TP_COLOR_ONLY:pool_walls.color_only.frag
+  pool_floor.frag:TP_COLOR_ONLY:pool_floor.color_only.frag
+  sphere.frag:TP_COLOR_ONLY:sphere.color_only.frag
+  box.frag:TP_COLOR_ONLY:box.color_only.frag)
+
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS
     ${TIDEPOOL_SHADER_DIR}/*.comp ${TIDEPOOL_SHADER_DIR}/*.vert ${TIDEPOOL_SHADER_DIR}/*.frag)
   file(MAKE_DIRECTORY ${TIDEPOOL_SPIRV_DIR})
   set(outputs "")
   set(copies "")
+  set(builds "")
   foreach(src ${shader_sources})
     get_filename_component(name ${src} NAME)
+    list(APPEND builds "${name}::${name}")
+  endforeach()
+  list(APPEND builds ${TIDEPOOL_SHADER_VARIANTS})
+  foreach(build ${builds})
+    string(REPLACE ":" ";" parts "${build}")
+    list(GET parts 0 source_name)
+    list(GET parts 1 macro)
+    list(GET parts 2 name)
+    set(src ${TIDEPOOL_SHADER_DIR}/${source_name})
+    set(defines "")
+    if(macro)
+      set(defines -D${macro})
+    endif()
     set(out ${TIDEPOOL_SPIRV_DIR}/${name}.spv)
     add_custom_command(
       OUTPUT ${out}
-      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -I${TIDEPOOL_SHADER_DIR}
+      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -I${TIDEPOOL_SHADER_DIR} ${defines}
               --depfile ${out}.d -o ${out} ${src}
       COMMAND ${SPIRV_VAL} --target-env vulkan1.3 ${out}
       MAIN_DEPENDENCY ${src}

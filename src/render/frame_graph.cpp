@@ -37,6 +37,8 @@ UseInfo info(Use use) {
     case Use::VertexStorageRead: return {{S::eVertexShader, A::eShaderStorageRead}, L::eGeneral, true, false};
     case Use::TransferRead: return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
     case Use::TransferWrite: return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, false, true};
+    case Use::HostData:
+      return {{S::eVertexShader | S::eFragmentShader | S::eComputeShader, A::eUniformRead}, L::eGeneral, true, false};
   }
   throw std::logic_error("unknown Use");
 }
@@ -69,23 +71,27 @@ FrameGraph::Resource& FrameGraph::at(ResourceRef ref) {
   return resources_[ref.index];
 }
 
-void FrameGraph::pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record) {
+void FrameGraph::pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record,
+                      PassOptions options) {
   for (const auto& [ref, use] : uses) {
     const Resource& r = at(ref);
     if (!r.image && info(use).layout != L::eGeneral && use != Use::TransferRead && use != Use::TransferWrite) {
       throw std::logic_error("FrameGraph: pass " + name + " uses buffer " + r.name + " as an image");
     }
   }
-  passes_.push_back({std::move(name), std::move(uses), std::move(record)});
+  passes_.push_back({std::move(name), std::move(uses), std::move(record), std::move(options), false, {}});
 }
 
-std::vector<bool> FrameGraph::needed(std::span<const ResourceRef> requested) const {
+void FrameGraph::touch(ResourceRef ref) { ++at(ref).version; }
+
+std::vector<bool> FrameGraph::needed(std::span<const ResourceRef> requested, const std::vector<bool>& absent) const {
   // Walk back from the requested resources: a pass is needed when it writes a
   // live resource, and then everything it reads is live too.
   std::vector<bool> live(resources_.size(), false);
   for (ResourceRef r : requested) live.at(r.index) = true;
   std::vector<bool> keep(passes_.size(), false);
   for (size_t p = passes_.size(); p-- > 0;) {
+    if (absent[p]) continue;
     for (const auto& [ref, use] : passes_[p].uses) {
       if (info(use).writes && live[ref.index]) keep[p] = true;
     }
@@ -144,21 +150,65 @@ void FrameGraph::barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarri
   }
 }
 
-std::vector<std::string> FrameGraph::record(PassContext& context, std::span<const ResourceRef> requested,
-                                            gpu::GpuTimer* timer) {
+std::vector<bool> FrameGraph::toRecord(std::span<const ResourceRef> requested) const {
+  std::vector<bool> absent(passes_.size(), false);
+  for (size_t p = 0; p < passes_.size(); ++p) absent[p] = passes_[p].options.runIf && !passes_[p].options.runIf();
+  auto keep = needed(requested, absent);
+  if (!caching_) return keep;
+  // A cached pass is fresh when every resource it uses will be at the version
+  // it saw, after the writes of the passes recorded before it this frame.
+  // Leaving a fresh pass out can only leave more passes out (their outputs
+  // then feed nothing, or do not change), so repeat until nothing changes.
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<uint64_t> version(resources_.size());
+    for (size_t r = 0; r < resources_.size(); ++r) version[r] = resources_[r].version;
+    for (size_t p = 0; p < passes_.size(); ++p) {
+      if (!keep[p]) continue;
+      const Pass& pass = passes_[p];
+      bool fresh = pass.options.cached && pass.ran;
+      for (size_t u = 0; fresh && u < pass.uses.size(); ++u) fresh = version[pass.uses[u].first.index] == pass.seen[u];
+      if (fresh) {
+        absent[p] = true;
+        changed = true;
+        continue;
+      }
+      for (const auto& [ref, use] : pass.uses) {
+        if (info(use).writes) ++version[ref.index];
+      }
+    }
+    if (changed) keep = needed(requested, absent);
+  }
+  return keep;
+}
+
+std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<const ResourceRef> requested,
+                                             gpu::GpuTimer* timer) {
   const vk::raii::CommandBuffer& cmd = context.cmd;
-  std::vector<std::string> recorded;
-  auto keep = needed(requested);
+  std::vector<RecordedPass> recorded;
+  const auto keep = toRecord(requested);
   for (size_t p = 0; p < passes_.size(); ++p) {
     if (!keep[p]) continue;
+    Pass& pass = passes_[p];
     std::vector<vk::BufferMemoryBarrier2> bufferBarriers;
     std::vector<vk::ImageMemoryBarrier2> imageBarriers;
-    barriersFor(passes_[p], bufferBarriers, imageBarriers);
+    barriersFor(pass, bufferBarriers, imageBarriers);
     gpu::pipelineBarrier(cmd, bufferBarriers, imageBarriers);
-    uint32_t scope = timer ? timer->begin(cmd, passes_[p].name) : 0;
-    passes_[p].record(context);
+    uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
+    RecordedPass done{pass.name, 0.0, {}};
+    {
+      gpu::CountScope counting(done.counts);
+      pass.record(context);
+    }
     if (timer) timer->end(cmd, scope);
-    recorded.push_back(passes_[p].name);
+    if (gpu::CommandCounts* frame = gpu::currentCounts()) *frame += done.counts;
+    for (const auto& [ref, use] : pass.uses) {
+      if (info(use).writes) ++at(ref).version;
+    }
+    pass.seen.clear();
+    for (const auto& [ref, use] : pass.uses) pass.seen.push_back(at(ref).version);
+    pass.ran = true;
+    recorded.push_back(std::move(done));
   }
   std::vector<vk::BufferMemoryBarrier2> toHost;
   for (ResourceRef ref : requested) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gpu/barriers.hpp"
+#include "gpu/commands.hpp"
 #include "gpu/descriptors.hpp"
 #include "gpu/memory.hpp"
 #include "gpu/timer.hpp"
@@ -27,6 +28,8 @@ enum class Use {
   FragmentUniformRead,  // buffer read as a uniform buffer in the fragment stage
   TransferRead,      // source of a copy
   TransferWrite,     // destination of a copy
+  HostData,          // a buffer the host fills, read as uniforms by any stage: no barrier (the submission
+                     // makes host writes visible); declared so that cached passes see it change (touch())
 };
 
 struct ResourceRef {
@@ -42,12 +45,24 @@ struct PassContext {
 struct RecordedPass {
   std::string name;
   double milliseconds = 0.0;  // NaN where the device has no timestamps
+  gpu::CommandCounts counts;  // what the pass recorded
+};
+
+struct PassOptions {
+  // The pass's outputs keep their contents from frame to frame and depend on
+  // nothing but the resources it declares: it is recorded again only when one
+  // of them changed (written by a pass, or touched by the host) since it last ran.
+  bool cached = false;
+  // Asked every frame: false leaves the pass out, and its outputs as they are.
+  std::function<bool()> runIf;
 };
 
 // A frame declared as passes with their reads and writes. record() keeps only
-// the passes that something requested depends on, in declaration order, and
-// puts before each the barriers its uses imply. Resource state persists from
-// one record() to the next, so a graph declared once can record every frame.
+// the passes that something requested depends on, less those whose runIf says
+// no and the cached passes whose inputs have not changed, in declaration
+// order, and puts before each the barriers its uses imply. Resource state
+// persists from one record() to the next, so a graph declared once can record
+// every frame.
 class FrameGraph {
  public:
   // `layout`: the layout the image is in when the first recorded frame begins
@@ -56,14 +71,20 @@ class FrameGraph {
   ResourceRef buffer(std::string name, const gpu::Buffer& buffer);
 
   using Recorder = std::function<void(PassContext&)>;
-  void pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record);
+  void pass(std::string name, std::vector<std::pair<ResourceRef, Use>> uses, Recorder record, PassOptions options = {});
 
   size_t passCount() const { return passes_.size(); }
 
-  // Returns the names of the passes recorded, in order. Requested buffers end
-  // with a barrier that makes them readable on the host.
-  std::vector<std::string> record(PassContext& context, std::span<const ResourceRef> requested,
-                                  gpu::GpuTimer* timer = nullptr);
+  // The host changed the resource's contents: cached passes reading it run again.
+  void touch(ResourceRef ref);
+  // Off: cached passes run every frame (a frame with nothing skipped, to compare against).
+  void setCaching(bool on) { caching_ = on; }
+
+  // Returns the passes recorded, in order, with what each recorded (times are
+  // the caller's to fill in from `timer`). Requested buffers end with a
+  // barrier that makes them readable on the host.
+  std::vector<RecordedPass> record(PassContext& context, std::span<const ResourceRef> requested,
+                                   gpu::GpuTimer* timer = nullptr);
 
  private:
   struct Resource {
@@ -75,20 +96,27 @@ class FrameGraph {
     gpu::Access lastWrite = gpu::access::none;
     vk::PipelineStageFlags2 readStages;      // stages that read since the last write
     gpu::Access visible = gpu::access::none;  // where the last write has been made visible
+    uint64_t version = 0;                     // bumped by every write and touch
   };
   struct Pass {
     std::string name;
     std::vector<std::pair<ResourceRef, Use>> uses;
     Recorder record;
+    PassOptions options;
+    bool ran = false;
+    std::vector<uint64_t> seen;  // versions of its resources when it last ran, in the order of `uses`
   };
 
-  std::vector<bool> needed(std::span<const ResourceRef> requested) const;
+  // Passes that something requested depends on, `absent` ones not counted.
+  std::vector<bool> needed(std::span<const ResourceRef> requested, const std::vector<bool>& absent) const;
+  std::vector<bool> toRecord(std::span<const ResourceRef> requested) const;
   void barriersFor(const Pass& pass, std::vector<vk::BufferMemoryBarrier2>& buffers,
                    std::vector<vk::ImageMemoryBarrier2>& images);
   Resource& at(ResourceRef ref);
 
   std::vector<Resource> resources_;
   std::vector<Pass> passes_;
+  bool caching_ = true;
 };
 
 }  // namespace tp::render

@@ -51,16 +51,16 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, b
     return attachment(*target.image, vk::ImageLayout::eColorAttachmentOptimal, load,
                       vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
   };
-  const vk::RenderingAttachmentInfo colorTargets[] = {
-      attachment(*t.color.image, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad),
-      gbufferTarget(t.normal), gbufferTarget(t.ambient)};
+  std::vector<vk::RenderingAttachmentInfo> colorTargets{
+      attachment(*t.color.image, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad)};
+  if (t.gbuffer()) colorTargets.insert(colorTargets.end(), {gbufferTarget(t.normal), gbufferTarget(t.ambient)});
   auto depthTarget = attachment(*t.depth.image, vk::ImageLayout::eDepthAttachmentOptimal, load,
                                 vk::ClearValue{.depthStencil = {1.0f, 0}});
   const vk::Extent2D extent = t.color.image->extent;
   cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
                                        .layerCount = 1,
-                                       .colorAttachmentCount = 3,
-                                       .pColorAttachments = colorTargets,
+                                       .colorAttachmentCount = uint32_t(colorTargets.size()),
+                                       .pColorAttachments = colorTargets.data(),
                                        .pDepthAttachment = &depthTarget});
   setViewport(cmd, extent);
   draw();
@@ -72,6 +72,7 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, b
 std::vector<std::pair<ResourceRef, Use>> surfaceUses(const SurfaceTargets& t, bool first) {
   std::vector<std::pair<ResourceRef, Use>> uses{{t.color.ref, Use::ColorReadWrite},
                                                 {t.depth.ref, first ? Use::DepthWrite : Use::DepthReadWrite}};
+  if (!t.gbuffer()) return uses;
   for (const Target& g : {t.normal, t.ambient}) uses.push_back({g.ref, first ? Use::ColorWrite : Use::ColorReadWrite});
   return uses;
 }
@@ -98,12 +99,15 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   gpu::drawIndexed(cmd, pool.floorIndexCount);
 }
 
-// A pipeline of an opaque surface: colour, the two G-buffer targets, depth.
-gpu::GraphicsPipelineDesc opaque(const char* vertexShader, const char* fragmentShader, uint32_t pushSize) {
+// A pipeline of an opaque surface: colour, the two G-buffer targets (or,
+// without them, the fragment shader's colour-only variant), depth.
+gpu::GraphicsPipelineDesc opaque(const std::string& vertexShader, const std::string& fragmentShader, uint32_t pushSize,
+                                 bool gbuffer) {
+  const std::string colorOnly = fragmentShader.substr(0, fragmentShader.rfind('.')) + ".color_only.frag";
   return {.vertexShader = vertexShader,
-          .fragmentShader = fragmentShader,
+          .fragmentShader = gbuffer ? fragmentShader : colorOnly,
           .pushSize = pushSize,
-          .colorFormats = {kHdrFormat, kGbufferFormat, kGbufferFormat},
+          .colorFormats = gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
           .depthFormat = kDepthFormat,
           .depthTest = true,
           .depthWrite = true};
@@ -139,9 +143,10 @@ static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena
   }
 }
 
-ObjectPass::ObjectPass(const gpu::Context& ctx)
-    : spherePipeline(gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams)))),
-      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams)))) {}
+ObjectPass::ObjectPass(const gpu::Context& ctx, bool gbuffer)
+    : spherePipeline(
+          gpu::createGraphicsPipeline(ctx, opaque("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer))),
+      boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
 
 void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                          const MediumDraw& medium, const std::vector<shader::SphereParams>* spheres,
@@ -152,12 +157,12 @@ void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const
     drawSurfaces(pc.cmd, targets, false, [&] {
       drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, *spheres, *boxes);
     });
-  });
+  }, {.cached = false, .runIf = [spheres, boxes] { return !spheres->empty() || !boxes->empty(); }});
 }
 
-PoolPass::PoolPass(const gpu::Context& ctx)
-    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0))),
-      floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4)))) {}
+PoolPass::PoolPass(const gpu::Context& ctx, bool gbuffer)
+    : walls(gpu::createGraphicsPipeline(ctx, opaque("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
+      floor(gpu::createGraphicsPipeline(ctx, opaque("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {}
 
 void PoolPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                        const PoolDraw& pool, const MediumDraw& medium) const {
@@ -180,7 +185,7 @@ void SkyPass::declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& s
     gpu::bindPipeline(cmd, pipeline, params);
     gpu::DescriptorWrites().storageImage(0, sky).bind(cmd, pipeline, pc.descriptors);
     gpu::dispatchCovering(cmd, pipeline, params.size.x, params.size.y);
-  });
+  }, {.cached = true, .runIf = {}});
 }
 
 BackgroundPass::BackgroundPass(const gpu::Context& ctx)
@@ -204,8 +209,9 @@ void BackgroundPass::declare(FrameGraph& graph, ResourceRef colorRef, const gpu:
              });
 }
 
-GroundPass::GroundPass(const gpu::Context& ctx)
-    : pipeline(gpu::createGraphicsPipeline(ctx, opaque("ground.vert", "ground.frag", sizeof(shader::GroundParams)))) {}
+GroundPass::GroundPass(const gpu::Context& ctx, bool gbuffer)
+    : pipeline(
+          gpu::createGraphicsPipeline(ctx, opaque("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer))) {}
 
 void GroundPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                          const shader::GroundParams& params) const {
@@ -269,8 +275,8 @@ CausticsPass::CausticsPass(const gpu::Context& ctx)
                                                  .additive = true})) {}
 
 void CausticsPass::declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool,
-                           const gpu::Buffer& frameUniforms) const {
-  std::vector<std::pair<ResourceRef, Use>> uses{{pool.causticsRef, Use::ColorWrite}};
+                           const gpu::Buffer& frameUniforms, ResourceRef uniformsRef) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{{pool.causticsRef, Use::ColorWrite}, {uniformsRef, Use::HostData}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
   graph.pass("caustics", std::move(uses), [this, water, pool, &frameUniforms](PassContext& pc) {
     const auto& cmd = pc.cmd;
@@ -288,7 +294,7 @@ void CausticsPass::declare(FrameGraph& graph, const WaterDraw& water, const Pool
         .bind(cmd, pipeline, pc.descriptors);
     drawWater(cmd, water);
     cmd.endRendering();
-  });
+  }, {.cached = true, .runIf = {}});
 }
 
 namespace {
@@ -383,8 +389,8 @@ CameraMediumPass::CameraMediumPass(const gpu::Context& ctx)
     : pipeline(gpu::createComputePipeline(ctx, "camera_medium.comp", sizeof(shader::WaterSurfaceParams))) {}
 
 void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms,
-                               const MediumDraw& medium) const {
-  std::vector<std::pair<ResourceRef, Use>> uses{{medium.ref, Use::ComputeWrite}};
+                               ResourceRef uniformsRef, const MediumDraw& medium) const {
+  std::vector<std::pair<ResourceRef, Use>> uses{{medium.ref, Use::ComputeWrite}, {uniformsRef, Use::HostData}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::ComputeRead});
   graph.pass("camera medium", std::move(uses), [this, water, &frameUniforms, medium](PassContext& pc) {
     gpu::bindPipeline(pc.cmd, pipeline, water.params);
@@ -394,7 +400,7 @@ void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const 
         .storageBuffer(2, water.state())
         .bind(pc.cmd, pipeline, pc.descriptors);
     gpu::dispatch(pc.cmd, 1);
-  });
+  }, {.cached = true, .runIf = {}});
 }
 
 void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,

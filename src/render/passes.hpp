@@ -33,15 +33,16 @@ struct Target {
 };
 
 // What the opaque surfaces (ground, pool, objects) draw into: colour and
-// depth, and the G-buffer SSAO reads beside them: the view-space normal and
-// the ambient part of the colour. Always all four, AO or not: undefined
-// G-buffer formats with null views draw, but the validation layer warns of
-// fragment outputs left without an attachment.
+// depth, and, when something reads it (SSAO), the G-buffer beside them: the
+// view-space normal and the ambient part of the colour. Without it the
+// surfaces draw with their shaders' colour-only variants.
 struct SurfaceTargets {
   Target color, depth, normal, ambient;
+  bool gbuffer() const { return normal.image != nullptr; }
 };
 
-// Compute: the procedural sky into an equirectangular HDR texture.
+// Compute: the procedural sky into an equirectangular HDR texture. Cached:
+// its parameters are fixed, so it runs on the first frame only.
 struct SkyPass {
   explicit SkyPass(const gpu::Context& ctx);
   void declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& sky, const shader::SkyParams& params) const;
@@ -59,7 +60,7 @@ struct BackgroundPass {
 // Graphics: the checkered ground plane, depth tested; the first surface, so it
 // clears depth and the G-buffer.
 struct GroundPass {
-  explicit GroundPass(const gpu::Context& ctx);
+  GroundPass(const gpu::Context& ctx, bool gbuffer);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
                const shader::GroundParams& params) const;
   gpu::Pipeline pipeline;
@@ -89,16 +90,17 @@ struct PoolDraw {
 
 // Graphics: the pool's inner walls and its terrain floor.
 struct PoolPass {
-  explicit PoolPass(const gpu::Context& ctx);
+  PoolPass(const gpu::Context& ctx, bool gbuffer);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const PoolDraw& pool,
                const MediumDraw& medium) const;
   gpu::Pipeline walls, floor;
 };
 
 // Graphics: the scene's spheres and boxes, one draw each, where `spheres` and
-// `boxes` say they are when the frame records (spheres may move from frame to frame).
+// `boxes` say they are when the frame records (spheres may move from frame to
+// frame); left out of a frame where both are empty (all out of view).
 struct ObjectPass {
-  explicit ObjectPass(const gpu::Context& ctx);
+  ObjectPass(const gpu::Context& ctx, bool gbuffer);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
                const std::vector<shader::SphereParams>* spheres, const std::vector<shader::BoxParams>* boxes) const;
   gpu::Pipeline spherePipeline, boxPipeline;
@@ -137,15 +139,18 @@ struct WaterSurfacePass {
 // the sun onto the floor's mean plane (shaders_glsl/caustics.vert).
 struct CausticsPass {
   explicit CausticsPass(const gpu::Context& ctx);
-  void declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool, const gpu::Buffer& frameUniforms) const;
+  // Cached: recorded again only when the water or the frame uniforms (`uniformsRef`: the sun) changed.
+  void declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool, const gpu::Buffer& frameUniforms,
+               ResourceRef uniformsRef) const;
   gpu::Pipeline pipeline;
 };
 
 // Compute: whether the camera is under the simulated surface, into `medium`
-// (one invocation after the simulation).
+// (one invocation after the simulation). Cached: recorded again only when the
+// water or the frame uniforms (the camera) changed.
 struct CameraMediumPass {
   explicit CameraMediumPass(const gpu::Context& ctx);
-  void declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms,
+  void declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms, ResourceRef uniformsRef,
                const MediumDraw& medium) const;
   gpu::Pipeline pipeline;
 };

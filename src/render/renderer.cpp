@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 #include <optional>
@@ -7,6 +8,8 @@
 #include "gpu/submit.hpp"
 #include "gpu/timer.hpp"
 #include "render/frame_uniforms.hpp"
+#include "render/frustum.hpp"
+#include "render/water_sleep.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
 #include "render/objects_model.hpp"
@@ -18,13 +21,17 @@
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
 
+#include <limits>
+
 namespace tp::render {
 
 struct Renderer::Resources {
   Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h, const RendererOptions& options)
-      : skyPass(ctx),
+      : skipping(options.skipping),
+        gbuffer(scene.ao.enabled || !options.skipping),
+        skyPass(ctx),
         backgroundPass(ctx),
-        groundPass(ctx),
+        groundPass(ctx, gbuffer),
         tonemapPass(ctx),
         sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
                                                     .minFilter = vk::Filter::eLinear,
@@ -60,7 +67,10 @@ struct Renderer::Resources {
                                         gpu::MemoryUse::Readback, "HDR readback")),
         ldrReadback(gpu::createBuffer(ctx, vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst,
                                       gpu::MemoryUse::Readback, "LDR readback")),
-        descriptors(ctx) {
+        descriptors(ctx),
+        sleep(sleepRule(scene.water)) {
+    graph.setCaching(skipping);
+    uniformsRef = graph.buffer("frame uniforms", uniforms);
     if (scene.water.enabled) {
       water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water),
                     sim::StepKernel::OnePerDispatch);
@@ -69,6 +79,7 @@ struct Renderer::Resources {
       indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                         "water grid indices");
       substeps = render::waterSubsteps(scene.water);
+      sleep.restart(water->stats(waterStep(scene.water)));
     }
     // The sky: the procedural one, filled by the sky pass, or an image, uploaded
     // once (and then no sky pass at all), which alone lights the scene.
@@ -88,8 +99,7 @@ struct Renderer::Resources {
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
     SurfaceTargets surfaces{{colorRef, &color}, {depthRef, &depth}, {}, {}};
-    // Drawn even without AO (SurfaceTargets says why); skipping it is issue 6's.
-    declareGbuffer(ctx, w, h, surfaces);
+    if (gbuffer) declareGbuffer(ctx, w, h, surfaces);
     auto ldrRef = graph.image("ldr", ldr);
     colorReadbackRef = graph.buffer("color readback", colorReadback);
     ldrReadbackRef = graph.buffer("ldr readback", ldrReadback);
@@ -102,13 +112,25 @@ struct Renderer::Resources {
                             &indices,
                             indexCount,
                             waterSurfaceParams(scene)};
+      // The drops, the steps to this frame, and the stats that say whether the
+      // water is healthy and whether it may sleep; left out while it sleeps.
       graph.pass("simulate",
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
-                 [this, scene](PassContext& pc) { recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps); });
+                 [this, scene](PassContext& pc) {
+                   for (const scene::Drop& d : pendingDrops) {
+                     const glm::vec3 centre = worldToGrid(scene.water, {d.x, 0.0f, d.z});
+                     water->recordDrop(pc.cmd, {centre.x, centre.z}, d.radius, d.amplitude);
+                   }
+                   recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps);
+                   water->recordStats(pc.cmd, waterStep(scene.water));
+                 },
+                 {.cached = false, .runIf = [this] { return simulating; }});
     }
-    // The medium around the camera: decided after the simulation where there
-    // is water, air (zeros, uploaded once) where there is none.
-    if (water) {
+    // The medium around the camera: decided after the simulation where the
+    // camera is over the water, air (zeros, uploaded once) where it cannot be
+    // under it.
+    const bool mediumPass = water && (cameraOverWater(scene) || !skipping);
+    if (mediumPass) {
       medium = gpu::createBuffer(ctx, sizeof(shader::CameraMedium),
                                  vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformBuffer,
                                  gpu::MemoryUse::Device, "camera medium");
@@ -118,9 +140,9 @@ struct Renderer::Resources {
                                        gpu::MemoryUse::Upload, "camera medium");
     }
     const MediumDraw mediumDraw{graph.buffer("camera medium", medium), &medium};
-    if (water) {
+    if (mediumPass) {
       cameraMediumPass.emplace(ctx);
-      cameraMediumPass->declare(graph, *waterDraw, uniforms, mediumDraw);
+      cameraMediumPass->declare(graph, *waterDraw, uniforms, uniformsRef, mediumDraw);
     }
     std::optional<PoolDraw> poolDraw;
     if (hasPool(scene)) {
@@ -141,7 +163,7 @@ struct Renderer::Resources {
                                            "caustics");
         poolDraw->causticsRef = graph.image("caustics", causticsImage);
         causticsPass.emplace(ctx);
-        causticsPass->declare(graph, *waterDraw, *poolDraw, uniforms);
+        causticsPass->declare(graph, *waterDraw, *poolDraw, uniforms, uniformsRef);
       } else {
         // The floor lit as through flat water: one texel of 1, uploaded once.
         causticsImage = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
@@ -152,13 +174,12 @@ struct Renderer::Resources {
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, surfaces, uniforms, ground);
     if (poolDraw) {
-      poolPass.emplace(ctx);
+      poolPass.emplace(ctx, gbuffer);
       poolPass->declare(graph, surfaces, uniforms, *poolDraw, mediumDraw);
     }
-    for (const auto& sphere : scene.spheres) spheres.push_back(sphereParams(sphere));
-    for (const auto& box : scene.boxes) boxes.push_back(boxParams(box));
-    if (!spheres.empty() || !boxes.empty()) {
-      objectPass.emplace(ctx);
+    // `spheres` and `boxes`: those in view, filled by render().
+    if (!scene.spheres.empty() || !scene.boxes.empty()) {
+      objectPass.emplace(ctx, gbuffer);
       objectPass->declare(graph, surfaces, uniforms, mediumDraw, &spheres, &boxes);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -256,6 +277,8 @@ struct Renderer::Resources {
                     viewNormalReadback);
   }
 
+  bool skipping;  // RendererOptions::skipping
+  bool gbuffer;   // the surfaces draw the G-buffer: AO reads it (or nothing is skipped)
   SkyPass skyPass;
   BackgroundPass backgroundPass;
   GroundPass groundPass;
@@ -296,8 +319,12 @@ struct Renderer::Resources {
   uint32_t substeps = 1;
   uint64_t stepsDone = 0;
   uint64_t pendingSteps = 0;
+  std::vector<scene::Drop> pendingDrops;  // addDrop()'s, for the next frame
+  bool simulating = false;                 // this frame records the simulation
+  WaterSleep sleep;
+  double waterEnergy = 0.0;
   FrameGraph graph;
-  ResourceRef colorRef, colorReadbackRef, ldrReadbackRef;
+  ResourceRef colorRef, colorReadbackRef, ldrReadbackRef, uniformsRef;
 };
 
 Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
@@ -307,30 +334,73 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t 
 
 Renderer::~Renderer() = default;
 
+namespace {
+
+// Whether a sphere's path moves it at some time in (t0, t1].
+bool bodyMoves(const scene::Scene& scene, double t0, double t1) {
+  for (const auto& sphere : scene.spheres) {
+    if (sphere.path.size() >= 2 && t1 > sphere.path.front().time && t0 < sphere.path.back().time) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void Renderer::addDrop(const scene::Drop& drop) {
+  if (!res_->water) throw std::runtime_error("a drop needs a scene with water");
+  res_->pendingDrops.push_back(drop);
+}
+
 RenderedFrame Renderer::render(const FrameRequest& request) {
   RenderedFrame out;
   out.width = width_;
   out.height = height_;
   const shader::FrameUniforms uniforms = frameUniforms(scene_, res_->light, width_, height_);
-  std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
+  if (std::memcmp(res_->uniforms.mapped, &uniforms, sizeof(uniforms)) != 0) {
+    std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
+    res_->graph.touch(res_->uniformsRef);
+  }
   out.worldToCamera = uniforms.view;
   out.worldToNDC = uniforms.viewProjection;
   out.inverseProjection = uniforms.inverseProjection;
 
+  res_->simulating = false;
   if (res_->water) {
     // Frame N shows the water after N frames of simulation from the scene's
-    // start, whatever was rendered before: going back restarts it.
+    // start, whatever was rendered before: going back restarts it. Sleeping
+    // water skips ahead without a step.
+    const double dt = waterStep(scene_.water);
     const uint64_t target = uint64_t(request.frame) * res_->substeps;
     if (target < res_->stepsDone) {
       res_->water->reset(waterInitialState(scene_.water));
       res_->stepsDone = 0;
+      res_->sleep.restart(res_->water->stats(dt));
     }
-    res_->pendingSteps = target - res_->stepsDone;
+    if (!res_->pendingDrops.empty() || bodyMoves(scene_, double(res_->stepsDone) * dt, double(target) * dt)) {
+      res_->sleep.wake();
+    }
+    if (res_->skipping && res_->sleep.asleep()) {
+      res_->stepsDone = target;
+      res_->pendingSteps = 0;
+    } else {
+      res_->pendingSteps = target - res_->stepsDone;
+      res_->simulating = res_->pendingSteps > 0 || !res_->pendingDrops.empty();
+    }
   }
-  // Spheres with a path are where the path puts them at this frame's time.
+  // Spheres with a path are where the path puts them at this frame's time;
+  // only those in view are drawn (all of them stay in the objects the water's
+  // rays meet: a reflection shows what the frame does not).
   const float time = float(request.frame) * scene_.water.frameTime;
   const scene::Scene placed = scene::sceneAt(scene_, time);
-  for (size_t i = 0; i < placed.spheres.size(); ++i) res_->spheres[i] = sphereParams(placed.spheres[i]);
+  const Frustum frustum(uniforms.viewProjection);
+  res_->spheres.clear();
+  for (const auto& sphere : placed.spheres) {
+    if (!res_->skipping || frustum.mayShow(sphere.center, sphere.radius)) res_->spheres.push_back(sphereParams(sphere));
+  }
+  res_->boxes.clear();
+  for (const auto& box : placed.boxes) {
+    if (!res_->skipping || frustum.mayShow(box.center, 0.5f * glm::length(box.size))) res_->boxes.push_back(boxParams(box));
+  }
   if (res_->objectUniforms.mapped) {
     const shader::SceneObjects objects = sceneObjects(placed);
     std::memcpy(res_->objectUniforms.mapped, &objects, sizeof(objects));
@@ -353,11 +423,25 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) {
     timer.reset(cmd);
     PassContext context{cmd, res_->descriptors};
-    res_->graph.record(context, requested, &timer);
+    gpu::CountScope counting(out.counts);
+    out.passes = res_->graph.record(context, requested, &timer);
   }, "frame rendering");
-  for (const auto& scope : timer.read()) out.passes.push_back({scope.name, scope.milliseconds});
-  res_->stepsDone += res_->pendingSteps;
-  res_->pendingSteps = 0;
+  const auto times = timer.read();
+  for (size_t p = 0; p < out.passes.size(); ++p) out.passes[p].milliseconds = times.at(p).milliseconds;
+  const bool simulated =
+      std::any_of(out.passes.begin(), out.passes.end(), [](const RecordedPass& p) { return p.name == "simulate"; });
+  if (simulated) {
+    res_->stepsDone += res_->pendingSteps;
+    res_->pendingSteps = 0;
+    res_->pendingDrops.clear();
+    const sim::WaterStats stats = res_->water->readStats();
+    sim::checkHealth(stats, res_->stepsDone, std::numeric_limits<double>::infinity());
+    const double area = double(scene_.water.extent) * scene_.water.extent;
+    res_->waterEnergy = stats.energy / area;
+    res_->sleep.observe(stats, area);
+  }
+  out.waterAsleep = res_->water && !simulated;
+  out.waterEnergy = res_->waterEnergy;
 
   const size_t pixels = size_t(width_) * height_;
   if (request.hdr) {

@@ -20,6 +20,12 @@ struct FrameRequest {
 
 struct RendererOptions {
   bool aovs = false;  // make the targets and the pass for arbitrary output variables
+  // Leave out what a frame does not need: the G-buffer without AO, the camera
+  // medium with the camera away from the water, passes whose inputs have not
+  // changed (sky, caustics, camera medium), the simulation of water that has
+  // come to rest (WaterSleep), objects outside the view. Off, every frame
+  // records all of it: the frame to compare against.
+  bool skipping = true;
 };
 
 struct RenderedFrame {
@@ -36,6 +42,9 @@ struct RenderedFrame {
   std::vector<float> ao, aoRaw, gbufferDepth, gbufferNormal;
   uint32_t aoWidth = 0, aoHeight = 0;
   std::vector<RecordedPass> passes;
+  gpu::CommandCounts counts;  // the whole frame's: the sum over `passes`
+  bool waterAsleep = false;   // the water was drawn as it was, not simulated
+  double waterEnergy = 0.0;   // per unit area, after the last simulated frame (WaterSleep's measure)
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
   glm::mat4 inverseProjection{1.0f};
@@ -49,6 +58,8 @@ class Renderer {
            const RendererOptions& options = {});
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
+  // A drop into the water before the next frame's simulation (it wakes sleeping water).
+  void addDrop(const scene::Drop& drop);
 
  private:
   struct Resources;

@@ -166,6 +166,13 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
   return meshes;
 }
 
+bool cameraOverWater(const scene::Scene& scene) {
+  // As underWaterSurface tests it, with the square's edge counted in.
+  const float half = 0.5f * scene.water.extent;
+  const glm::vec3 c = scene.camera.position;
+  return std::abs(c.x) <= half && std::abs(c.z) <= half;
+}
+
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water) {
   if (!water) return {glm::vec4(0.0f)};
   const shader::WaterSurfaceParams p = waterSurfaceParams(scene);

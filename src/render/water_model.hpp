@@ -42,6 +42,10 @@ shader::GroundParams groundParams(const scene::Scene& scene);
 // sided at the edges: the normals water_surface.vert computes.
 std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent);
 
+// Whether the camera is over the water's square (and so may be under its
+// surface); elsewhere the medium around it is air whatever the water does.
+bool cameraOverWater(const scene::Scene& scene);
+
 // The medium around the camera given the water's state (none: air), as
 // camera_medium.comp decides it on the GPU.
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water);

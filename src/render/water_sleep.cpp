@@ -1,0 +1,42 @@
+#include "render/water_sleep.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace tp::render {
+
+namespace {
+// The energy only falls when nothing disturbs the water, so one frame under
+// the threshold would do; a few guard against the float sums' rounding.
+constexpr uint32_t kQuietFrames = 3;
+}  // namespace
+
+SleepRule sleepRule(const scene::Water& water) {
+  const double c = water.waveSpeed;
+  return {0.5 * (kSleepSlope * c) * (kSleepSlope * c), kQuietFrames};
+}
+
+double sleepSlopeBound(const scene::Water& water, double energyPerArea) {
+  return 2.0 * std::sqrt(2.0 * std::max(energyPerArea, 0.0)) / water.waveSpeed;
+}
+
+double sleepHeightBound(const scene::Water& water, double energyPerArea) {
+  return water.extent / std::numbers::pi * sleepSlopeBound(water, energyPerArea);
+}
+
+void WaterSleep::restart(const sim::WaterStats& stats) {
+  quiet_ = 0;
+  asleep_ = stats.energy == 0.0 && stats.maxAbsV == 0.0;
+}
+
+void WaterSleep::wake() {
+  quiet_ = 0;
+  asleep_ = false;
+}
+
+void WaterSleep::observe(const sim::WaterStats& stats, double area) {
+  quiet_ = stats.energy / area <= rule_.energyPerArea ? quiet_ + 1 : 0;
+  if (quiet_ >= rule_.quietFrames) asleep_ = true;
+}
+
+}  // namespace tp::render
