@@ -47,6 +47,19 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   ssao->add_option("--csv", o.ssao.csv, "CSV output")->type_name("PATH")->capture_default_str();
   ssao->add_option("--plot", o.ssao.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   addGpuOptions(ssao, o.ssao.validate, o.ssao.device);
+  CLI::App* frame = bench->add_subcommand(
+      "frame", "Scene variants as frame sequences with skipping on and off: GPU ms per frame and the passes, "
+               "dispatches, draws and workgroups recorded");
+  frame->add_option("--scene", o.frame.scenePath, "Scene file (JSON) the variants start from; default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  frame->add_option("--resolution", o.frame.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  frame->add_option("--frames", o.frame.frames, "Timed frames of each sequence (frames 1..N, after frame 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 100000u));
+  frame->add_option("--csv", o.frame.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  frame->add_option("--plot", o.frame.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(frame, o.frame.validate, o.frame.device);
   return bench;
 }
 
@@ -54,6 +67,7 @@ int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
+  if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);
   return 2;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include "app/bench_frame.hpp"
 #include "app/bench_sim.hpp"
 #include "app/bench_ssao.hpp"
 #include "app/bench_water.hpp"
@@ -11,9 +12,10 @@ struct BenchOptions {
   BenchSimOptions sim;
   BenchWaterOptions water;
   BenchSsaoOptions ssao;
+  BenchFrameOptions frame;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, water, ssao).
+// Adds `tidepool bench` with its subcommands (sim, water, ssao, frame).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

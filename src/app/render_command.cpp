@@ -24,17 +24,25 @@ constexpr uint32_t kMaxSide = 16384;
 constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
 
 void printProfile(const render::RenderedFrame& frame) {
-  std::printf("%-20s %10s\n", "pass", "GPU ms");
+  std::printf("%-20s %10s %10s %6s %11s\n", "pass", "GPU ms", "dispatches", "draws", "workgroups");
   double total = 0.0;
+  auto row = [](const char* name, const char* ms, const gpu::CommandCounts& c) {
+    std::printf("%-20s %10s %10llu %6llu %11llu\n", name, ms, static_cast<unsigned long long>(c.dispatches),
+                static_cast<unsigned long long>(c.draws), static_cast<unsigned long long>(c.workgroups));
+  };
   for (const auto& pass : frame.passes) {
-    if (std::isnan(pass.milliseconds)) {
-      std::printf("%-20s %10s\n", pass.name.c_str(), "n/a");
-    } else {
-      std::printf("%-20s %10.3f\n", pass.name.c_str(), pass.milliseconds);
+    char ms[32] = "n/a";
+    if (!std::isnan(pass.milliseconds)) {
+      std::snprintf(ms, sizeof ms, "%.3f", pass.milliseconds);
       total += pass.milliseconds;
     }
+    row(pass.name.c_str(), ms, pass.counts);
   }
-  std::printf("%-20s %10.3f\n", "total", total);
+  char ms[32];
+  std::snprintf(ms, sizeof ms, "%.3f", total);
+  char name[40];
+  std::snprintf(name, sizeof name, "total (%zu passes)", frame.passes.size());
+  row(name, ms, frame.counts);
 }
 
 bool wants(const std::vector<std::string>& aovs, const char* name) {
@@ -134,7 +142,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
   half->excludes(full);
   addGpuOptions(cmd, o.validate, o.device);
-  auto* profile = cmd->add_flag("--profile", o.profile, "Print GPU milliseconds per pass");
+  auto* profile = cmd->add_flag("--profile", o.profile,
+                                "Print each pass recorded with its GPU milliseconds, dispatches, draws and workgroups");
+  cmd->add_flag("--no-skip", o.noSkip,
+                "Record every pass the scene has, even those this frame does not need (the frame to compare "
+                "against; README, \"What a frame skips\")");
   cmd->add_option("--aov", o.aovs,
                   "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
                   "P (P.x P.y P.z world position); infinite Z and P where nothing is hit. With AO on: ao (after "
@@ -187,7 +199,7 @@ int runRender(const RenderOptions& o) {
   if (o.reference) {
     frame = renderReferenceFrame(session, scene, o);
   } else {
-    render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs});
+    render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs, .skipping = !o.noSkip});
     frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs, .ao = aoAovs});
   }
   std::vector<float> aoRaw, aoRef;

@@ -17,6 +17,7 @@ struct RenderOptions {
   bool validate = false;
   std::string device;
   bool profile = false;
+  bool noSkip = false;            // record every pass (RendererOptions::skipping off)
   std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
   bool noAo = false;              // switch the scene's ambient occlusion off for this render
   std::string aoPreset;           // empty: the scene's own AO settings

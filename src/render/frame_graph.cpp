@@ -195,7 +195,8 @@ std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<con
     barriersFor(pass, bufferBarriers, imageBarriers);
     gpu::pipelineBarrier(cmd, bufferBarriers, imageBarriers);
     uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
-    RecordedPass done{pass.name, 0.0, {}};
+    RecordedPass done{pass.name, 0.0, {}, {}};
+    for (const auto& [ref, use] : pass.uses) done.resources.push_back(at(ref).name);
     {
       gpu::CountScope counting(done.counts);
       pass.record(context);

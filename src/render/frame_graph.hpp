@@ -46,6 +46,7 @@ struct RecordedPass {
   std::string name;
   double milliseconds = 0.0;  // NaN where the device has no timestamps
   gpu::CommandCounts counts;  // what the pass recorded
+  std::vector<std::string> resources;  // the names of the images and buffers it uses
 };
 
 struct PassOptions {

@@ -1,8 +1,5 @@
 #include "render/water_sleep.hpp"
 
-#include <cmath>
-#include <numbers>
-
 namespace tp::render {
 
 namespace {
@@ -14,14 +11,6 @@ constexpr uint32_t kQuietFrames = 3;
 SleepRule sleepRule(const scene::Water& water) {
   const double c = water.waveSpeed;
   return {0.5 * (kSleepSlope * c) * (kSleepSlope * c), kQuietFrames};
-}
-
-double sleepSlopeBound(const scene::Water& water, double energyPerArea) {
-  return 2.0 * std::sqrt(2.0 * std::max(energyPerArea, 0.0)) / water.waveSpeed;
-}
-
-double sleepHeightBound(const scene::Water& water, double energyPerArea) {
-  return water.extent / std::numbers::pi * sleepSlopeBound(water, energyPerArea);
 }
 
 void WaterSleep::restart(const sim::WaterStats& stats) {

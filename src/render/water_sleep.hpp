@@ -25,10 +25,6 @@ inline constexpr double kSleepSlope = 5e-5;
 
 SleepRule sleepRule(const scene::Water& water);
 
-// Bounds on how far a frozen state at this energy per area can be from the simulated one.
-double sleepSlopeBound(const scene::Water& water, double energyPerArea);
-double sleepHeightBound(const scene::Water& water, double energyPerArea);
-
 class WaterSleep {
  public:
   explicit WaterSleep(SleepRule rule) : rule_(rule) {}
