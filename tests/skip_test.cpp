@@ -13,6 +13,7 @@
 #include "io/image_io.hpp"
 #include "process.hpp"
 #include "render/frame_graph.hpp"
+#include "render/objects_model.hpp"
 #include "render/renderer.hpp"
 #include "render/water_model.hpp"
 #include "render/water_sleep.hpp"
@@ -86,6 +87,12 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
          s.boxes.push_back({.center = {-30.0f, 0.5f, 0.0f}});
        },
        {"objects", "camera medium"}, {}},
+      {"sphere above the water",
+       [](scene::Scene& s, const std::string&) {
+         s.spheres[0].center = {0.3f, 0.9f, -0.2f};  // bottom 0.45 m over the rim: left out of the casts below
+         s.boxes.push_back({.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}});  // reaches into the pool
+       },
+       {"camera medium"}, {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};
@@ -127,6 +134,22 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       EXPECT_TRUE(anyPassUses(b, "view normal"));
     }
   }
+}
+
+// What the rays under the water can meet: the objects reaching below the
+// water's top come first and are counted in count.zw; the rest only in count.xy.
+TEST(SkipObjects, ObjectsWhollyOverTheWaterAreLeftOutOfTheCastsBelowIt) {
+  scene::Scene s = scene::defaultScene();
+  s.spheres = {{{0.0f, 1.0f, 0.0f}, 0.5f}, {{1.0f, 0.2f, 0.0f}, 0.3f}, {{-1.0f, 0.49f, 0.0f}, 0.5f}};
+  s.boxes = {{.center = {0.0f, 0.5f, 1.0f}, .size = {1.0f, 0.8f, 1.0f}}, {.center = {0.0f, 0.3f, -1.0f}, .size = {1.0f, 0.8f, 1.0f}}};
+  const shader::SceneObjects objects = render::sceneObjects(s, 0.0f);
+  EXPECT_EQ(objects.count, glm::uvec4(3, 2, 2, 1));
+  // Below first, each group in the scene's order.
+  EXPECT_EQ(glm::vec3(objects.spheres[0]), glm::vec3(1.0f, 0.2f, 0.0f));
+  EXPECT_EQ(glm::vec3(objects.spheres[1]), glm::vec3(-1.0f, 0.49f, 0.0f));
+  EXPECT_EQ(glm::vec3(objects.spheres[2]), glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_EQ(glm::vec3(objects.boxCenter[0]), glm::vec3(0.0f, 0.3f, -1.0f));
+  EXPECT_EQ(render::sceneObjects(s).count, glm::uvec4(3, 2, 3, 2));  // no water top: every object
 }
 
 // The counters count what is recorded: the default scene's frame 1 steps its

@@ -32,7 +32,7 @@ vec3 radianceAbove(vec3 p, vec3 r) {
     nearest = sWall;
     radiance = poolWallRadiance(pool, frame, poolWallNormal(walls, r));
   }
-  const ObjectHit object = castObjects(objects, p, r, nearest);
+  const ObjectHit object = castObjects(objects, objects.count.xy, p, r, nearest);
   return object.distance > 0.0 ? objectRadiance(frame, object.albedo, object.normal) : radiance;
 }
 
@@ -45,7 +45,7 @@ vec3 radianceBelow(vec3 p, vec3 t) {
                                                 texture(caustics, causticsUv(pool, hit.position.xz)).r)
                             : poolWallRadiance(pool, frame, hit.normal);
   float distance = hit.distance;
-  const ObjectHit object = castObjects(objects, p, t, distance);
+  const ObjectHit object = castObjects(objects, objects.count.zw, p, t, distance);
   if (object.distance > 0.0) {
     distance = object.distance;
     radiance = objectRadiance(frame, object.albedo, object.normal);

@@ -13,7 +13,9 @@
 TP_BEGIN
 
 struct SceneObjects {
-  uvec4 count;                          // x: spheres, y: boxes
+  // x: spheres, y: boxes; z, w: how many of them (the first) reach down
+  // into the pool, where the rays below the water surface can meet them
+  uvec4 count;
   vec4 spheres[TP_MAX_SPHERES];         // xyz centre, w radius
   vec4 sphereAlbedo[TP_MAX_SPHERES];    // rgb
   vec4 boxCenter[TP_MAX_BOXES];         // xyz centre, w yaw (radians, about +y, from +x towards -z)
@@ -85,14 +87,16 @@ struct ObjectHit {
   vec3 albedo;
 };
 
-// The nearest sphere or box along origin + s dir (dir unit) with s < limit.
-TP_INLINE ObjectHit castObjects(SceneObjects objects, vec3 origin, vec3 dir, float limit) {
+// The nearest sphere or box along origin + s dir (dir unit) with s < limit,
+// among the first `counts` (x spheres, y boxes): count.xy for every object,
+// count.zw for those below the rim, which alone rays under the water can meet.
+TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin, vec3 dir, float limit) {
   ObjectHit hit;
   hit.distance = -1.0f;
   hit.normal = vec3(0.0f);
   hit.albedo = vec3(0.0f);
   float nearest = limit;
-  for (uint i = 0u; i < objects.count.x; ++i) {
+  for (uint i = 0u; i < counts.x; ++i) {
     float s = raySphere(origin, dir, objects.spheres[i]);
     if (s > 0.0f && s < nearest) {
       nearest = s;
@@ -101,7 +105,7 @@ TP_INLINE ObjectHit castObjects(SceneObjects objects, vec3 origin, vec3 dir, flo
       hit.albedo = vec3(objects.sphereAlbedo[i]);
     }
   }
-  for (uint i = 0u; i < objects.count.y; ++i) {
+  for (uint i = 0u; i < counts.y; ++i) {
     vec4 b = rayBox(origin, dir, objects.boxCenter[i], objects.boxHalfSize[i]);
     if (b.x > 0.0f && b.x < nearest) {
       nearest = b.x;

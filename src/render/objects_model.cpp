@@ -1,18 +1,29 @@
 #include "render/objects_model.hpp"
 
+#include <algorithm>
 #include <glm/gtc/constants.hpp>
 
 namespace tp::render {
 
-shader::SceneObjects sceneObjects(const scene::Scene& scene) {
+shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   shader::SceneObjects objects{};
-  objects.count = {uint32_t(scene.spheres.size()), uint32_t(scene.boxes.size()), 0u, 0u};
-  for (size_t i = 0; i < scene.spheres.size(); ++i) {
-    objects.spheres[i] = glm::vec4(scene.spheres[i].center, scene.spheres[i].radius);
-    objects.sphereAlbedo[i] = glm::vec4(scene.spheres[i].albedo, 0.0f);
+  std::vector<scene::Sphere> spheres = scene.spheres;
+  std::vector<scene::Box> boxes = scene.boxes;
+  // Boxes turn about the vertical only: their lowest point is half their height down.
+  const auto sphereBelow = std::stable_partition(spheres.begin(), spheres.end(), [&](const scene::Sphere& s) {
+    return s.center.y - s.radius < waterTop;
+  });
+  const auto boxBelow = std::stable_partition(boxes.begin(), boxes.end(), [&](const scene::Box& b) {
+    return b.center.y - 0.5f * b.size.y < waterTop;
+  });
+  objects.count = {uint32_t(spheres.size()), uint32_t(boxes.size()), uint32_t(sphereBelow - spheres.begin()),
+                   uint32_t(boxBelow - boxes.begin())};
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    objects.spheres[i] = glm::vec4(spheres[i].center, spheres[i].radius);
+    objects.sphereAlbedo[i] = glm::vec4(spheres[i].albedo, 0.0f);
   }
-  for (size_t i = 0; i < scene.boxes.size(); ++i) {
-    const shader::BoxParams box = boxParams(scene.boxes[i]);
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    const shader::BoxParams box = boxParams(boxes[i]);
     objects.boxCenter[i] = box.center;
     objects.boxHalfSize[i] = box.halfSize;
     objects.boxAlbedo[i] = box.albedo;

@@ -1,4 +1,6 @@
 #pragma once
+#include <limits>
+
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shared/objects.h"
@@ -11,8 +13,12 @@ inline constexpr uint32_t kSphereSlices = 64;
 inline constexpr uint32_t kSphereVertices = kSphereStacks * kSphereSlices * 6;
 inline constexpr uint32_t kBoxVertices = 36;  // box.vert: six faces of two triangles
 
-// The one place where the scene's objects become shader parameters.
-shader::SceneObjects sceneObjects(const scene::Scene& scene);
+// The one place where the scene's objects become shader parameters. Objects
+// whose lowest point is below `waterTop` come first and are counted in
+// count.zw: only they can meet a ray under the water surface (the default
+// counts every object in).
+shader::SceneObjects sceneObjects(const scene::Scene& scene,
+                                  float waterTop = std::numeric_limits<float>::infinity());
 shader::SphereParams sphereParams(const scene::Sphere& sphere);
 shader::BoxParams boxParams(const scene::Box& box);
 // The sphere as sphere.vert tessellates it, the box as box.vert draws it.

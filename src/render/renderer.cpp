@@ -79,7 +79,7 @@ struct Renderer::Resources {
       indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                         "water grid indices");
       substeps = render::waterSubsteps(scene.water);
-      sleep.restart(water->stats(waterStep(scene.water)));
+      restartWater(scene, water->stats(waterStep(scene.water)));
     }
     // The sky: the procedural one, filled by the sky pass, or an image, uploaded
     // once (and then no sky pass at all), which alone lights the scene.
@@ -224,6 +224,18 @@ struct Renderer::Resources {
     declareReadback(graph, "readback ldr", ldrRef, ldr, ldrReadbackRef, ldrReadback);
   }
 
+  // The water's statistics after a start: whether it is at rest, and how high it reaches.
+  void restartWater(const scene::Scene& scene, const sim::WaterStats& stats) {
+    sleep.restart(stats);
+    waterTop = highestWater(scene, stats);
+  }
+
+  // The highest the water's surface can be to reach the objects: the rim,
+  // unless the last stats saw a wave over it.
+  static float highestWater(const scene::Scene& scene, const sim::WaterStats& stats) {
+    return std::max(scene.ground.height, scene.water.level + float(stats.maxAbsU));
+  }
+
   // The G-buffer targets beside colour and depth, with their readbacks.
   void declareGbuffer(const gpu::Context& ctx, uint32_t w, uint32_t h, SurfaceTargets& surfaces) {
     const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage;
@@ -323,6 +335,7 @@ struct Renderer::Resources {
   bool simulating = false;                 // this frame records the simulation
   WaterSleep sleep;
   double waterEnergy = 0.0;
+  float waterTop = std::numeric_limits<float>::infinity();  // highestWater() after the last stats
   FrameGraph graph;
   ResourceRef colorRef, colorReadbackRef, ldrReadbackRef, uniformsRef;
 };
@@ -374,7 +387,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     if (target < res_->stepsDone) {
       res_->water->reset(waterInitialState(scene_.water));
       res_->stepsDone = 0;
-      res_->sleep.restart(res_->water->stats(dt));
+      res_->restartWater(scene_, res_->water->stats(dt));
     }
     if (!res_->pendingDrops.empty() || bodyMoves(scene_, double(res_->stepsDone) * dt, double(target) * dt)) {
       res_->sleep.wake();
@@ -402,7 +415,9 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     if (!res_->skipping || frustum.mayShow(box.center, 0.5f * glm::length(box.size))) res_->boxes.push_back(boxParams(box));
   }
   if (res_->objectUniforms.mapped) {
-    const shader::SceneObjects objects = sceneObjects(placed);
+    // Objects wholly over the water are left out of the casts under it.
+    const shader::SceneObjects objects =
+        sceneObjects(placed, res_->skipping ? res_->waterTop : std::numeric_limits<float>::infinity());
     std::memcpy(res_->objectUniforms.mapped, &objects, sizeof(objects));
   }
   std::vector<ResourceRef> requested;
@@ -439,6 +454,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     const double area = double(scene_.water.extent) * scene_.water.extent;
     res_->waterEnergy = stats.energy / area;
     res_->sleep.observe(stats, area);
+    res_->waterTop = Resources::highestWater(scene_, stats);
   }
   out.waterAsleep = res_->water && !simulated;
   out.waterEnergy = res_->waterEnergy;
