@@ -112,6 +112,7 @@ struct Renderer::Resources {
                             &indices,
                             indexCount,
                             waterSurfaceParams(scene)};
+      waterStateRefs = waterDraw->stateRefs;
       // The drops, the steps to this frame, and the stats that say whether the
       // water is healthy and whether it may sleep; left out while it sleeps.
       graph.pass("simulate",
@@ -331,6 +332,7 @@ struct Renderer::Resources {
   uint32_t substeps = 1;
   uint64_t stepsDone = 0;
   uint64_t pendingSteps = 0;
+  std::vector<ResourceRef> waterStateRefs;
   std::vector<scene::Drop> pendingDrops;  // addDrop()'s, for the next frame
   bool simulating = false;                 // this frame records the simulation
   WaterSleep sleep;
@@ -386,6 +388,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     const uint64_t target = uint64_t(request.frame) * res_->substeps;
     if (target < res_->stepsDone) {
       res_->water->reset(waterInitialState(scene_.water));
+      for (ResourceRef state : res_->waterStateRefs) res_->graph.touch(state);  // uploaded outside the graph
       res_->stepsDone = 0;
       res_->restartWater(scene_, res_->water->stats(dt));
     }
