@@ -3,6 +3,7 @@
 
 #include "app/bench_sim.hpp"
 #include "app/bench_ssao.hpp"
+#include "app/bench_tiles.hpp"
 #include "app/bench_water.hpp"
 
 namespace tp::app {
@@ -11,9 +12,10 @@ struct BenchOptions {
   BenchSimOptions sim;
   BenchWaterOptions water;
   BenchSsaoOptions ssao;
+  BenchTilesOptions tiles;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, water, ssao).
+// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 
