@@ -203,4 +203,29 @@ TEST_F(SimActiveTiles, CalmWaterDispatchesNoTiles) {
   }
 }
 
+// The automatic choice follows the count of the last submission: full after
+// a reset (every tile counts as changed) and while waves cover the grid,
+// the list once the water is calm or the disturbance is small. At 0% and 100%
+// active, any rule between the two measured extremes gives these answers.
+TEST_F(SimActiveTiles, AutomaticDispatchFollowsTheLastCount) {
+  const sim::WaterParams p{.n = 256, .extent = 1.0, .waveSpeed = 1.0, .boundary = sim::Boundary::Wrap};
+  const double dt = dtOf(p);
+  sim::GpuStepper s(ctx(), p, sim::flatState(p.n, kLevel), sim::StepKernel::ActiveTiles);
+  s.step(1, dt);
+  EXPECT_TRUE(s.lastStepsFull()) << "after a reset";
+  s.step(1, dt);
+  EXPECT_FALSE(s.lastStepsFull()) << "calm water";
+  s.drop({0.5f, 0.5f}, 0.02f, 0.1f);
+  s.step(3, dt);
+  EXPECT_FALSE(s.lastStepsFull()) << "a small drop";
+  s.reset(randomState(p.n, kLevel, 0.01, 5));
+  s.step(1, dt);
+  s.step(1, dt);
+  EXPECT_TRUE(s.lastStepsFull()) << "waves everywhere";
+  const auto counts = s.readTilesDispatched();
+  EXPECT_EQ(counts.direct, 3u * s.tiles().count()) << "the three full steps";
+  EXPECT_GT(counts.listed, 0u);
+  EXPECT_LE(counts.listed, 3u * 4 * 4) << "the drop touches 2x2 tiles: with their halo, 4x4 per step";
+}
+
 }  // namespace tp::test

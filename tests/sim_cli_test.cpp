@@ -112,6 +112,21 @@ TEST(BenchCli, SimBenchmarkWritesItsTable) {
   EXPECT_NE(r.out.find("cpu openmp"), std::string::npos);
 }
 
+TEST(BenchCli, TilesBenchmarkWritesItsTable) {
+  ScratchDir dir;
+  const std::string csv = dir.file("tiles.csv");
+  ProcessResult r = runTidepool(
+      "bench tiles --validate --sizes 32,48 --radii 0,0.3 --steps 2 --repeats 1 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("grid,drop_radius,active_fraction,ms_full,ms_active,", 0), 0u) << line;
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 2 * 2);
+}
+
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");

@@ -17,7 +17,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       ->check(CLI::Range(0.01, 60.0));
   addGpuOptions(sim, o.sim.validate, o.sim.device);
   CLI::App* tiles = bench->add_subcommand(
-      "tiles", "Water stepper on active tiles: ms per step of full-grid and active-list dispatch against the active fraction");
+      "tiles", "Water stepper on active tiles: ms per step over all tiles, over the active list and with the one-step kernel, against the fraction of tiles active");
   tiles->add_option("--sizes", o.tiles.sizes, "Grid sides to measure")->delimiter(',')->capture_default_str()
       ->check(CLI::Range(16u, 8192u));
   tiles->add_option("--radii", o.tiles.radii, "Drop radii as fractions of the side (0: calm water)")

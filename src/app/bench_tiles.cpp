@@ -23,48 +23,75 @@ constexpr double kLambda = 0.5;      // Courant number
 
 sim::WaterParams paramsFor(unsigned n) { return sim::WaterParams{.n = n, .extent = 1.0, .waveSpeed = 1.0}; }
 
-struct Timed {
+struct Sample {
   double msPerStep = 0.0;
-  double activeFraction = 0.0;  // tiles dispatched / (steps * all tiles)
+  double activeFraction = 1.0;  // tiles dispatched / (steps * all tiles)
 };
 
-// Median over `repeats` of one submission of `steps` steps right after a drop
-// of `radius` (as a fraction of the side; 0: none) on calm water, as the stepper's
-// current dispatch mode runs it.
-Timed timeSteps(const gpu::Context& ctx, sim::GpuStepper& stepper, double radius, const BenchTilesOptions& o) {
+// One submission of `steps` steps right after a drop of `radius` (as a
+// fraction of the side; 0: none) on calm water, as the stepper's current
+// dispatch mode runs it.
+Sample timeOnce(const gpu::Context& ctx, gpu::GpuTimer& timer, sim::GpuStepper& stepper, double radius, uint32_t steps) {
   const auto p = stepper.params();
   const double dt = kLambda * p.h() / p.waveSpeed;
-  gpu::GpuTimer timer(ctx, 1);
-  std::vector<double> ms, fractions;
-  for (uint32_t r = 0; r < o.repeats; ++r) {
-    stepper.reset(sim::flatState(p.n, kLevel));
-    stepper.step(1, dt);  // a reset marks every tile: settle that outside the timing
-    if (radius > 0.0) stepper.drop({float(0.5 * p.extent), float(0.5 * p.extent)}, float(radius * p.extent), kAmplitude);
-    stepper.readTilesDispatched();
-    const auto start = std::chrono::steady_clock::now();
-    gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-      timer.reset(cmd);
-      const uint32_t scope = timer.begin(cmd, "steps");
-      stepper.recordSteps(cmd, o.steps, dt);
-      timer.end(cmd, scope);
-    }, "benchmark");
-    double milliseconds = timer.read().front().milliseconds;
-    if (std::isnan(milliseconds)) {
-      milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    }
-    ms.push_back(milliseconds / o.steps);
-    const uint64_t all = stepper.kernel() == sim::StepKernel::ActiveTiles ? stepper.tiles().count() : 0;
-    fractions.push_back(all ? double(stepper.readTilesDispatched().total()) / (double(o.steps) * double(all)) : 1.0);
+  stepper.reset(sim::flatState(p.n, kLevel));
+  stepper.step(1, dt);  // a reset marks every tile: settle that outside the timing
+  if (radius > 0.0) stepper.drop({float(0.5 * p.extent), float(0.5 * p.extent)}, float(radius * p.extent), kAmplitude);
+  stepper.readTilesDispatched();
+  const auto start = std::chrono::steady_clock::now();
+  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
+    timer.reset(cmd);
+    const uint32_t scope = timer.begin(cmd, "steps");
+    stepper.recordSteps(cmd, steps, dt);
+    timer.end(cmd, scope);
+  }, "benchmark");
+  double milliseconds = timer.read().front().milliseconds;
+  if (std::isnan(milliseconds)) {
+    milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
-  return {median(ms), median(fractions)};
+  Sample sample{.msPerStep = milliseconds / steps};
+  if (stepper.kernel() == sim::StepKernel::ActiveTiles) {
+    sample.activeFraction = double(stepper.readTilesDispatched().total()) / (double(steps) * stepper.tiles().count());
+  }
+  return sample;
 }
 
 struct Row {
-  unsigned n;
-  double radius;
-  Timed full, active, plain;
-  bool ruleActive;
+  unsigned n = 0;
+  double radius = 0.0;
+  double activeFraction = 0.0;
+  double msFull = 0.0, msActive = 0.0, msPlain = 0.0;
+  double activeOverFull = 0.0;  // median of the ratios of the same repeat
+  bool ruleActive = false;
 };
+
+// The three ways to step one case, interleaved repeat by repeat so that the
+// ratios compare runs under the same load (the machine may be shared).
+Row measure(const gpu::Context& ctx, sim::GpuStepper& tiles, sim::GpuStepper& plain, double radius,
+            const BenchTilesOptions& o) {
+  gpu::GpuTimer timer(ctx, 1);
+  std::vector<double> full, active, onePerDispatch, ratios, fractions;
+  for (uint32_t r = 0; r < o.repeats; ++r) {
+    tiles.setTileDispatch(sim::TileDispatch::Full);
+    full.push_back(timeOnce(ctx, timer, tiles, radius, o.steps).msPerStep);
+    tiles.setTileDispatch(sim::TileDispatch::Active);
+    const Sample a = timeOnce(ctx, timer, tiles, radius, o.steps);
+    active.push_back(a.msPerStep);
+    fractions.push_back(a.activeFraction);
+    onePerDispatch.push_back(timeOnce(ctx, timer, plain, radius, o.steps).msPerStep);
+    ratios.push_back(active.back() / full.back());
+  }
+  Row row{.n = tiles.params().n,
+          .radius = radius,
+          .activeFraction = median(fractions),
+          .msFull = median(full),
+          .msActive = median(active),
+          .msPlain = median(onePerDispatch),
+          .activeOverFull = median(ratios)};
+  const uint32_t all = tiles.tiles().count();
+  row.ruleActive = sim::preferActiveList(uint32_t(std::lround(row.activeFraction * all)), all);
+  return row;
+}
 
 // The active fraction at which active and full take the same time, linear
 // between the measured points around the first crossing (none: nullopt).
@@ -72,9 +99,9 @@ std::optional<double> crossover(const std::vector<Row>& rows, unsigned n) {
   const Row* previous = nullptr;
   for (const Row& r : rows) {
     if (r.n != n) continue;
-    if (previous && previous->active.msPerStep <= previous->full.msPerStep && r.active.msPerStep > r.full.msPerStep) {
-      const double d0 = previous->active.msPerStep - previous->full.msPerStep, d1 = r.active.msPerStep - r.full.msPerStep;
-      const double f0 = previous->active.activeFraction, f1 = r.active.activeFraction;
+    if (previous && previous->activeOverFull <= 1.0 && r.activeOverFull > 1.0) {
+      const double d0 = previous->activeOverFull - 1.0, d1 = r.activeOverFull - 1.0;
+      const double f0 = previous->activeFraction, f1 = r.activeFraction;
       return f0 + (f1 - f0) * (-d0) / (d1 - d0);
     }
     previous = &r;
@@ -93,15 +120,7 @@ int runBenchTiles(const BenchTilesOptions& o) {
     sim::GpuStepper tiles(ctx, paramsFor(n), sim::flatState(n, kLevel), sim::StepKernel::ActiveTiles);
     sim::GpuStepper plain(ctx, paramsFor(n), sim::flatState(n, kLevel), sim::StepKernel::OnePerDispatch);
     for (double radius : o.radii) {
-      Row row{.n = n, .radius = radius, .full = {}, .active = {}, .plain = {}, .ruleActive = false};
-      tiles.setTileDispatch(sim::TileDispatch::Full);
-      row.full = timeSteps(ctx, tiles, radius, o);
-      tiles.setTileDispatch(sim::TileDispatch::Active);
-      row.active = timeSteps(ctx, tiles, radius, o);
-      row.plain = timeSteps(ctx, plain, radius, o);
-      row.ruleActive = sim::preferActiveList(n, uint32_t(std::lround(row.active.activeFraction * tiles.tiles().count())),
-                                             tiles.tiles().count());
-      rows.push_back(row);
+      rows.push_back(measure(ctx, tiles, plain, radius, o));
       std::fprintf(stderr, "bench tiles: grid %u, drop radius %.3g measured\n", n, radius);
     }
   }
@@ -112,13 +131,12 @@ int runBenchTiles(const BenchTilesOptions& o) {
   std::printf("%6s %8s %8s %10s %10s %10s %8s %7s\n", "grid", "radius", "active", "full ms", "active ms", "plain ms",
               "act/full", "rule");
   for (const Row& r : rows) {
-    const double ratio = r.active.msPerStep / r.full.msPerStep;
     const char* rule = r.ruleActive ? "active" : "full";
-    std::printf("%6u %8.3g %8.3f %10.4f %10.4f %10.4f %8.3f %7s\n", r.n, r.radius, r.active.activeFraction,
-                r.full.msPerStep, r.active.msPerStep, r.plain.msPerStep, ratio, rule);
-    csv << r.n << "," << formatNumber("%.4g", r.radius) << "," << formatNumber("%.4g", r.active.activeFraction) << ","
-        << formatNumber("%.6g", r.full.msPerStep) << "," << formatNumber("%.6g", r.active.msPerStep) << ","
-        << formatNumber("%.6g", r.plain.msPerStep) << "," << formatNumber("%.4g", ratio) << "," << rule << ",\""
+    std::printf("%6u %8.3g %8.3f %10.4f %10.4f %10.4f %8.3f %7s\n", r.n, r.radius, r.activeFraction, r.msFull,
+                r.msActive, r.msPlain, r.activeOverFull, rule);
+    csv << r.n << "," << formatNumber("%.4g", r.radius) << "," << formatNumber("%.4g", r.activeFraction) << ","
+        << formatNumber("%.6g", r.msFull) << "," << formatNumber("%.6g", r.msActive) << ","
+        << formatNumber("%.6g", r.msPlain) << "," << formatNumber("%.4g", r.activeOverFull) << "," << rule << ",\""
         << ctx.deviceName() << "\"\n";
   }
   for (unsigned n : o.sizes) {

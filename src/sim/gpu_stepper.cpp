@@ -138,14 +138,12 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps,
 void GpuStepper::recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt) {
   if (steps == 0) return;
   const bool full = tileDispatch_ == TileDispatch::Full ||
-                    (tileDispatch_ == TileDispatch::Auto && !preferActiveList(params_.n, tiles_.lastListed(), tiles_.count()));
+                    (tileDispatch_ == TileDispatch::Auto && !preferActiveList(tiles_.lastListed(), tiles_.count()));
   lastStepsFull_ = full;
   for (uint64_t s = 0; s < steps; ++s) {
-    // A full step needs no list; the last one still counts it, for the rule
-    // that chooses the next submission's dispatch.
-    if (!full || s + 1 == steps) {
+    if (!full) {
       beforeCompute(cmd);
-      tiles_.recordList(cmd, uint32_t(stepIndex_), !full);
+      tiles_.recordList(cmd, uint32_t(stepIndex_), true);
     }
     beforeCompute(cmd);
     const shader::WaterTileStepParams p{.step = stepParams(params_, dt, 1),
@@ -163,6 +161,12 @@ void GpuStepper::recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t 
     }
     current_ = 1 - current_;
     ++stepIndex_;
+  }
+  if (full) {
+    // Full steps need no list; one after them counts what the next step would
+    // dispatch, for the rule that chooses the next submission's way.
+    beforeCompute(cmd);
+    tiles_.recordList(cmd, uint32_t(stepIndex_), false);
   }
   tiles_.recordHostRead(cmd);
 }

@@ -27,7 +27,7 @@ namespace tp::sim {
 // Whether a step should dispatch the list of active tiles rather than every
 // tile, given how many tiles the last step listed. Measured with `tidepool
 // bench tiles` (README, "Active tiles"): see water_tiles.cpp.
-bool preferActiveList(uint32_t gridSide, uint32_t listedTiles, uint32_t allTiles);
+bool preferActiveList(uint32_t listedTiles, uint32_t allTiles);
 
 // Tiles dispatched by steps, since the last read.
 struct TileCounts {
