@@ -1,6 +1,5 @@
 #include "app/bench_tiles.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -8,8 +7,7 @@
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
-#include "app/plot.hpp"
-#include "gpu/submit.hpp"
+#include "app/time_steps.hpp"
 #include "gpu/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "sim/gpu_stepper.hpp"
@@ -38,18 +36,7 @@ Sample timeOnce(const gpu::Context& ctx, gpu::GpuTimer& timer, sim::GpuStepper& 
   stepper.step(1, dt);  // a reset marks every tile: settle that outside the timing
   if (radius > 0.0) stepper.drop({float(0.5 * p.extent), float(0.5 * p.extent)}, float(radius * p.extent), kAmplitude);
   stepper.readTilesDispatched();
-  const auto start = std::chrono::steady_clock::now();
-  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-    timer.reset(cmd);
-    const uint32_t scope = timer.begin(cmd, "steps");
-    stepper.recordSteps(cmd, steps, dt);
-    timer.end(cmd, scope);
-  }, "benchmark");
-  double milliseconds = timer.read().front().milliseconds;
-  if (std::isnan(milliseconds)) {
-    milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  }
-  Sample sample{.msPerStep = milliseconds / steps};
+  Sample sample{.msPerStep = 1e3 * timeSteps(ctx, timer, stepper, steps, dt) / steps};
   if (stepper.kernel() == sim::StepKernel::ActiveTiles) {
     sample.activeFraction = double(stepper.readTilesDispatched().total()) / (double(steps) * stepper.tiles().count());
   }
@@ -147,11 +134,7 @@ int runBenchTiles(const BenchTilesOptions& o) {
       std::printf("grid %u: no crossing of active and full in the measured range\n", n);
     }
   }
-  csv.close();
-  if (!csv) throw std::runtime_error("cannot write " + o.csv);
-  csvFile.commit();
-  std::printf("wrote %s\n", o.csv.c_str());
-  if (!o.plot.empty()) plotCsv("plot_bench_tiles.py", o.csv, o.plot);
+  commitBenchCsv(csvFile, csv, "plot_bench_tiles.py", o.plot);
   return session.finish();
 }
 
