@@ -62,7 +62,8 @@ class GpuStepper {
   void setTileDispatch(TileDispatch mode) { tileDispatch_ = mode; }
   // Whether the last recordSteps() dispatched all tiles (true) or the active list.
   bool lastStepsFull() const { return lastStepsFull_; }
-  // Tiles dispatched by steps since the last call, from finished submissions.
+  // Tiles dispatched by steps since the last call. Call it when none of the
+  // stepper's submissions is running: it zeroes a device counter they add to.
   // Inside a gpu::CountScope, add `listed` with gpu::addWorkgroups: the
   // indirect dispatches could not count their workgroups when recorded.
   TileCounts readTilesDispatched();
