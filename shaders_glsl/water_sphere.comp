@@ -5,11 +5,15 @@
 // by the length of the sphere's vertical chord below the rest level at the old
 // position minus that at the new one, so the water's volume changes by exactly
 // minus the change of the sphere's submerged volume (as the grid samples it).
+// Marks the tiles it changes so that an active-tile step computes them.
 #include "shared/water.h"
 
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0) buffer State { WaterCell cells[]; };
+layout(local_size_x = TP_WATER_TILE, local_size_y = TP_WATER_TILE) in;
+layout(binding = 0) buffer State { vec4 cells[]; };
+layout(binding = 1) buffer ChangedAt { uint changedAt[]; };
 layout(push_constant) uniform Push { WaterSphereParams params; };
+
+#include "lib/water_tile_mark.glsl"
 
 float submergedChord(vec3 center, float radius, vec2 column, float level) {
   const vec2 d = column - center.xz;
@@ -23,10 +27,20 @@ float submergedChord(vec3 center, float radius, vec2 column, float level) {
 
 void main() {
   const uvec2 p = gl_GlobalInvocationID.xy;
-  if (p.x >= params.n || p.y >= params.n) return;
-  const vec2 column = (vec2(p) + 0.5) * params.h;
-  const float radius = params.oldCenter.w, level = params.newCenter.w;
-  const float before = submergedChord(params.oldCenter.xyz, radius, column, level);
-  const float after = submergedChord(params.newCenter.xyz, radius, column, level);
-  if (before != after) cells[p.y * params.n + p.x].u += before - after;
+  bool changed = false;
+  if (p.x < params.n && p.y < params.n) {
+    const vec2 column = (vec2(p) + 0.5) * params.h;
+    const float radius = params.oldCenter.w, level = params.newCenter.w;
+    const float before = submergedChord(params.oldCenter.xyz, radius, column, level);
+    const float after = submergedChord(params.newCenter.xyz, radius, column, level);
+    if (before != after) {
+      const uint index = p.y * params.n + p.x;
+      const vec4 old = cells[index];
+      vec4 moved = old;
+      moved.y += before - after;
+      cells[index] = moved;
+      changed = cellChanged(old, moved);
+    }
+  }
+  markTileIfChanged(changed, gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x, params.markStep);
 }

@@ -2,11 +2,31 @@
 // how it refuses bad input.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <string>
+
 #include "io/image_io.hpp"
 #include "process.hpp"
 #include "sim/water_state.hpp"
 
 namespace tp::test {
+namespace {
+
+// A benchmark CSV's header line and its number of data rows.
+struct CsvShape {
+  std::string header;
+  int rows = 0;
+};
+
+CsvShape csvShape(const std::string& path) {
+  std::ifstream in(path);
+  CsvShape shape;
+  std::getline(in, shape.header);
+  for (std::string line; std::getline(in, line);) ++shape.rows;
+  return shape;
+}
+
+}  // namespace
 
 TEST(SimCli, WritesTheStateAsAnExrOfUAndV) {
   ScratchDir dir;
@@ -102,14 +122,21 @@ TEST(BenchCli, SimBenchmarkWritesItsTable) {
   const std::string csv = dir.file("bench.csv");
   ProcessResult r = runTidepool("bench sim --validate --sizes 16,32 --min-time 0.01 --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line.rfind("grid,method,", 0), 0u) << line;
-  int rows = 0;
-  while (std::getline(in, line)) ++rows;
-  EXPECT_EQ(rows, 2 * 5);
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("grid,method,", 0), 0u) << table.header;
+  EXPECT_EQ(table.rows, 2 * 5);
   EXPECT_NE(r.out.find("cpu openmp"), std::string::npos);
+}
+
+TEST(BenchCli, TilesBenchmarkWritesItsTable) {
+  ScratchDir dir;
+  const std::string csv = dir.file("tiles.csv");
+  ProcessResult r = runTidepool(
+      "bench tiles --validate --sizes 32,48 --radii 0,0.3 --steps 2 --repeats 1 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("grid,drop_radius,active_fraction,ms_full,ms_active,", 0), 0u) << table.header;
+  EXPECT_EQ(table.rows, 2 * 2);
 }
 
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
@@ -119,13 +146,9 @@ TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
                                     " --plot ''",
                                 dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line.rfind("view,width,height,mode,refraction_ms,", 0), 0u) << line;
-  int rows = 0;
-  while (std::getline(in, line)) ++rows;
-  EXPECT_EQ(rows, 3 * 2);  // three views, two modes
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("view,width,height,mode,refraction_ms,", 0), 0u) << table.header;
+  EXPECT_EQ(table.rows, 3 * 2);  // three views, two modes
   ScratchDir bad;
   for (const char* size : {"48", "48x", "0x32", "48x32x2", "5000x10"}) {
     const std::string error =

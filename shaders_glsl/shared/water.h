@@ -21,6 +21,10 @@ struct WaterCell {
 #define TP_WATER_SCHEME_SYMPLECTIC 0u
 #define TP_WATER_SCHEME_EXPLICIT 1u
 
+// Side of a tile in cells: the unit of active-tile stepping (sim/water_tiles.hpp)
+// and the workgroup of every water shader that marks the tiles it changes.
+#define TP_WATER_TILE 16
+
 // Push constants of water_step.comp and water_step_tiled.comp.
 struct WaterStepParams {
   uint n;            // grid side (n x n cells)
@@ -41,7 +45,8 @@ struct WaterDropParams {
   float radius;
   float amplitude;
   vec2 center;  // world x, z
-  vec2 pad;
+  uint markStep; // the state's step index: tiles whose cells change are marked changed at it
+  uint pad;
 };
 
 // Push constants of water_sphere.comp: a sphere moving from one centre to
@@ -53,7 +58,40 @@ struct WaterSphereParams {
   vec4 newCenter;  // xyz, w: rest level of the water surface
   uint n;
   float h;
-  vec2 pad;
+  uint markStep;  // as in WaterDropParams
+  uint pad;
+};
+
+// Push constants of water_step_active.comp: one step over whole tiles. Tile t
+// covers cells [tx*T, tx*T + T) x [ty*T, ty*T + T) with tx = t % tilesPerSide,
+// ty = t / tilesPerSide, T = TP_WATER_TILE.
+struct WaterTileStepParams {
+  WaterStepParams step;  // steps == 1
+  uint stepIndex;        // index of the state this step writes: tiles whose cells change are marked with it
+  uint tilesPerSide;
+  uint fromList;         // 1: workgroup k steps tile tileList[k]; 0: workgroup (x, y) steps tile (x, y)
+  uint pad;
+};
+
+// Push constants of water_tile_list.comp.
+struct WaterTileListParams {
+  uint tilesPerSide;
+  uint boundary;     // TP_WATER_BOUNDARY_*: whether tile neighbourhoods wrap
+  uint changedStep;  // lists the tiles with a tile changed at this step index in their 3x3 neighbourhood
+  uint accumulate;   // 1: add the listed count to the running total; 0: only count (for the dispatch rule)
+};
+
+// The tile list's counters, host-visible: the indirect dispatch of the next
+// step and the running total of listed tiles (a 64-bit count in two halves).
+struct WaterTileCounters {
+  uint groupsX;  // VkDispatchIndirectCommand: tiles listed by the last water_tile_list.comp
+  uint groupsY;
+  uint groupsZ;
+  uint totalLow;
+  uint totalHigh;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Push constants of water_stats.comp.
@@ -92,6 +130,13 @@ static_assert(sizeof(tp::shader::WaterStepParams) == 32);
 static_assert(sizeof(tp::shader::WaterDropParams) == 32);
 static_assert(sizeof(tp::shader::WaterSphereParams) == 48);
 static_assert(sizeof(tp::shader::WaterStatsParams) == 32);
+static_assert(sizeof(tp::shader::WaterTileStepParams) == 48);
+static_assert(offsetof(tp::shader::WaterTileStepParams, stepIndex) == 32);
+static_assert(sizeof(tp::shader::WaterTileListParams) == 16);
+static_assert(sizeof(tp::shader::WaterTileCounters) == 32);
+static_assert(offsetof(tp::shader::WaterTileCounters, totalLow) == 12);
+static_assert(offsetof(tp::shader::WaterDropParams, markStep) == 24);
+static_assert(offsetof(tp::shader::WaterSphereParams, markStep) == 40);
 static_assert(sizeof(tp::shader::WaterStatsPartial) == 32);
 #endif
 

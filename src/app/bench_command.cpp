@@ -16,6 +16,22 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")->capture_default_str()
       ->check(CLI::Range(0.01, 60.0));
   addGpuOptions(sim, o.sim.validate, o.sim.device);
+  CLI::App* tiles = bench->add_subcommand(
+      "tiles", "Water stepper on active tiles: ms per step over all tiles, over the active list and with the one-step kernel, against the fraction of tiles active");
+  tiles->add_option("--sizes", o.tiles.sizes, "Grid sides to measure")->delimiter(',')->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  tiles->add_option("--radii", o.tiles.radii, "Drop radii as fractions of the side (0: calm water)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 2.0));
+  tiles->add_option("--steps", o.tiles.steps, "Steps per timed submission, right after the drop")->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  tiles->add_option("--repeats", o.tiles.repeats, "Timed submissions per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  tiles->add_option("--csv", o.tiles.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  tiles->add_option("--plot", o.tiles.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(tiles, o.tiles.validate, o.tiles.device);
   CLI::App* water = bench->add_subcommand(
       "water", "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
   water->add_option("--scene", o.water.scenePath, "Scene file (JSON); default: the built-in scene")
@@ -65,6 +81,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
 
 int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
+  if (bench->get_subcommand("tiles")->parsed()) return runBenchTiles(o.tiles);
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);

@@ -4,6 +4,7 @@
 #include "app/bench_frame.hpp"
 #include "app/bench_sim.hpp"
 #include "app/bench_ssao.hpp"
+#include "app/bench_tiles.hpp"
 #include "app/bench_water.hpp"
 
 namespace tp::app {
@@ -12,10 +13,11 @@ struct BenchOptions {
   BenchSimOptions sim;
   BenchWaterOptions water;
   BenchSsaoOptions ssao;
+  BenchTilesOptions tiles;
   BenchFrameOptions frame;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, water, ssao, frame).
+// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

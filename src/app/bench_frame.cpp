@@ -9,7 +9,6 @@
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
-#include "app/plot.hpp"
 #include "io/atomic_file.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
@@ -100,11 +99,7 @@ int runBenchFrame(const BenchFrameOptions& o) {
           << o.frames << "," << r.width << "," << r.height << ",\"" << ctx.deviceName() << "\"\n";
     }
   }
-  csv.close();
-  if (!csv) throw std::runtime_error("cannot write " + o.csv);
-  csvFile.commit();
-  std::printf("wrote %s\n", o.csv.c_str());
-  if (!o.plot.empty()) plotCsv("plot_bench_frame.py", o.csv, o.plot);
+  commitBenchCsv(csvFile, csv, "plot_bench_frame.py", o.plot);
   return session.finish();
 }
 

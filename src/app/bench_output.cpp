@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <stdexcept>
 
+#include "app/plot.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tp::app {
@@ -16,6 +18,14 @@ void checkBenchOutputs(const std::string& csv, const std::string& plot) {
     io::requireExtension(plot, ".png");
     io::checkWritable(plot);
   }
+}
+
+void commitBenchCsv(io::AtomicFile& file, std::ofstream& csv, const std::string& plotScript, const std::string& plot) {
+  csv.close();
+  if (!csv) throw std::runtime_error("cannot write " + file.target());
+  file.commit();
+  std::printf("wrote %s\n", file.target().c_str());
+  if (!plot.empty()) plotCsv(plotScript, file.target(), plot);
 }
 
 Resolution parseResolution(const std::string& text, const std::string& bench) {

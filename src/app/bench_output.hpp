@@ -1,13 +1,22 @@
 #pragma once
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <vector>
+
+namespace tp::io {
+class AtomicFile;
+}
 
 namespace tp::app {
 
 // Every benchmark writes a CSV and, unless `plot` is empty, a PNG: both are
 // checked before any measuring starts, so a bad path costs nothing.
 void checkBenchOutputs(const std::string& csv, const std::string& plot);
+
+// Closes `csv`, written to file.tempPath(), renames it into place and says so;
+// then plots it with tools/<plotScript> unless `plot` is empty.
+void commitBenchCsv(io::AtomicFile& file, std::ofstream& csv, const std::string& plotScript, const std::string& plot);
 
 // An image size given as WxH, each side 8 to 4096; `bench` names the
 // benchmark in the error.

@@ -11,8 +11,7 @@
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
-#include "app/plot.hpp"
-#include "gpu/submit.hpp"
+#include "app/time_steps.hpp"
 #include "gpu/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "sim/cpu_stepper.hpp"
@@ -95,15 +94,7 @@ int runBenchSim(const BenchSimOptions& o) {
           sim::GpuStepper stepper(ctx, paramsFor(n), modeStart(n), m.kernel, m.halo);
           gpu::GpuTimer timer(ctx, 1);
           for (auto _ : state) {
-            auto start = std::chrono::steady_clock::now();
-            gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-              timer.reset(cmd);
-              const uint32_t scope = timer.begin(cmd, "steps");
-              stepper.recordSteps(cmd, steps, dt);
-              timer.end(cmd, scope);
-            }, "benchmark");
-            double seconds = timer.read().front().milliseconds * 1e-3;
-            if (std::isnan(seconds)) seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double seconds = timeSteps(ctx, timer, stepper, steps, dt);
             state.SetIterationTime(seconds);
             r.seconds += seconds;
             r.steps += steps;
@@ -171,11 +162,7 @@ int runBenchSim(const BenchSimOptions& o) {
           << formatNumber("%.6g", discrete) << "," << formatNumber("%.6g", continuous) << ",\"" << ctx.deviceName() << "\"\n";
     }
   }
-  csv.close();
-  if (!csv) throw std::runtime_error("cannot write " + o.csv);
-  csvFile.commit();
-  std::printf("wrote %s\n", o.csv.c_str());
-  if (!o.plot.empty()) plotCsv("plot_bench_sim.py", o.csv, o.plot);
+  commitBenchCsv(csvFile, csv, "plot_bench_sim.py", o.plot);
   return session.finish();
 }
 

@@ -9,7 +9,6 @@
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
-#include "app/plot.hpp"
 #include "io/atomic_file.hpp"
 #include "render/gbuffer_world.hpp"
 #include "render/reference_ao.hpp"
@@ -155,11 +154,7 @@ int runBenchSsao(const BenchSsaoOptions& o) {
         << referenceOptions.rays << "," << formatNumber("%.4g", referenceSeconds) << ",\"" << ctx.deviceName()
         << "\"\n";
   }
-  csv.close();
-  if (!csv) throw std::runtime_error("cannot write " + o.csv);
-  csvFile.commit();
-  std::printf("wrote %s\n", o.csv.c_str());
-  if (!o.plot.empty()) plotCsv("plot_bench_ssao.py", o.csv, o.plot);
+  commitBenchCsv(csvFile, csv, "plot_bench_ssao.py", o.plot);
   return session.finish();
 }
 

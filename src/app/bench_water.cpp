@@ -10,7 +10,6 @@
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
-#include "app/plot.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/image_error.hpp"
@@ -167,11 +166,7 @@ int runBenchWater(const BenchWaterOptions& o) {
       }
     }
   }
-  csv.close();
-  if (!csv) throw std::runtime_error("cannot write " + o.csv);
-  csvFile.commit();
-  std::printf("wrote %s\n", o.csv.c_str());
-  if (!o.plot.empty()) plotCsv("plot_bench_water.py", o.csv, o.plot);
+  commitBenchCsv(csvFile, csv, "plot_bench_water.py", o.plot);
   return session.finish();
 }
 

@@ -39,9 +39,10 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   cmd->add_option("--out", o.out, "Output EXR (float32 channels u, v; pixel (i, j) = cell (i, j))")
       ->type_name("PATH")
       ->required();
-  cmd->add_option("--kernel", o.kernel, "one (one step per dispatch) or tiled (several steps per dispatch)")
+  cmd->add_option("--kernel", o.kernel,
+                  "one (one step per dispatch), tiled (several steps per dispatch) or active (only the tiles in motion)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"one", "tiled"}));
+      ->check(CLI::IsMember({"one", "tiled", "active"}));
   cmd->add_option("--halo", o.halo, "Steps per dispatch of the tiled kernel")
       ->capture_default_str()
       ->check(CLI::Range(1u, sim::GpuStepper::kMaxHalo));
@@ -97,8 +98,10 @@ int runSim(const CLI::App& command, const SimOptions& o) {
   for (float u : initial.u) maxHeight = std::max(maxHeight, double(std::abs(u)));
   maxHeight = 1e3 * (maxHeight + params.extent);  // far beyond any sane wave: only a blow-up gets there
 
-  sim::GpuStepper stepper(ctx, params, initial,
-                          o.kernel == "tiled" ? sim::StepKernel::Tiled : sim::StepKernel::OnePerDispatch, o.halo);
+  const sim::StepKernel kernel = o.kernel == "tiled"    ? sim::StepKernel::Tiled
+                                 : o.kernel == "active" ? sim::StepKernel::ActiveTiles
+                                                        : sim::StepKernel::OnePerDispatch;
+  sim::GpuStepper stepper(ctx, params, initial, kernel, o.halo);
   const bool progress = isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
   sim::WaterStats stats = stepper.stats(dt);

@@ -71,6 +71,7 @@ inline constexpr Access computeRead{S::eComputeShader, A::eShaderStorageRead};
 inline constexpr Access transferWrite{S::eCopy, A::eTransferWrite};
 inline constexpr Access transferRead{S::eCopy, A::eTransferRead};
 inline constexpr Access hostRead{S::eHost, A::eHostRead};
+inline constexpr Access indirectRead{S::eDrawIndirect, A::eIndirectCommandRead};
 inline constexpr Access anyAccess{S::eAllCommands, A::eMemoryRead | A::eMemoryWrite};
 }  // namespace access
 

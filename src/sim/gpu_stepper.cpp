@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "gpu/barriers.hpp"
 #include "gpu/commands.hpp"
@@ -38,13 +39,18 @@ gpu::Buffer stateBuffer(const gpu::Context& ctx, uint32_t n, const char* what) {
 
 uint32_t groupsPerSide(uint32_t n) { return (n + kGroup - 1) / kGroup; }
 
+WaterParams withGrid(WaterParams p, uint32_t n) {
+  p.n = n;
+  validate(p);
+  return p;
+}
+
 }  // namespace
 
 GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
                        StepKernel kernel, uint32_t halo)
-    : ctx_(ctx), params_(params), kernel_(kernel), halo_(halo), descriptors_(ctx, 16) {
-  params_.n = initial.n;
-  validate(params_);
+    : ctx_(ctx), params_(withGrid(params, initial.n)), kernel_(kernel), halo_(halo),
+      tiles_(ctx, initial.n, params.boundary), descriptors_(ctx, 16) {
   if (halo < 1 || halo > kMaxHalo) {
     throw std::runtime_error("tiled water halo " + std::to_string(halo) + " is outside 1.." + std::to_string(kMaxHalo));
   }
@@ -54,6 +60,7 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
                                           gpu::Specialization().set(0, int32_t(halo)));
   dropPipeline_ = gpu::createComputePipeline(ctx, "water_drop.comp", sizeof(shader::WaterDropParams));
   spherePipeline_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams));
+  stepActive_ = gpu::createComputePipeline(ctx, "water_step_active.comp", sizeof(shader::WaterTileStepParams));
   statsPipeline_ = gpu::createComputePipeline(ctx, "water_stats.comp", sizeof(shader::WaterStatsParams));
   const std::string grid = std::to_string(n) + "x" + std::to_string(n) + " water state";
   buffers_[0] = stateBuffer(ctx, n, grid.c_str());
@@ -61,12 +68,18 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   partials_ = gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
                                 vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
   reset(initial);
-  const gpu::Pipeline& step = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
   for (int k = 0; k < 2; ++k) {
-    stepSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]).allocate(
-        step, descriptors_);
-    dropSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).allocate(dropPipeline_, descriptors_);
-    sphereSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).allocate(spherePipeline_, descriptors_);
+    gpu::DescriptorWrites step;
+    step.storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]);
+    if (kernel_ == StepKernel::ActiveTiles) {
+      stepSets_[k] = step.storageBuffer(2, tiles_.changedAt()).storageBuffer(3, tiles_.list()).allocate(stepActive_, descriptors_);
+    } else {
+      stepSets_[k] = step.allocate(kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_, descriptors_);
+    }
+    dropSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, tiles_.changedAt()).allocate(
+        dropPipeline_, descriptors_);
+    sphereSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, tiles_.changedAt()).allocate(
+        spherePipeline_, descriptors_);
     statsSets_[k] =
         gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, partials_).allocate(statsPipeline_, descriptors_);
   }
@@ -80,6 +93,8 @@ void GpuStepper::reset(const WaterState& state) {
   // that it is never read uninitialised, whichever kernel runs.
   gpu::uploadToBuffer(ctx_, buffers_[1], cells.data(), cells.size() * sizeof(cells[0]));
   current_ = 0;
+  stepIndex_ = 0;
+  tiles_.markAll(0);
 }
 
 void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
@@ -96,6 +111,10 @@ void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
 
 void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt) {
   checkStable(params_, dt);
+  if (kernel_ == StepKernel::ActiveTiles) {
+    recordActiveSteps(cmd, steps, dt);
+    return;
+  }
   const uint32_t n = params_.n;
   const uint32_t inner = kTile - 2 * halo_;
   for (uint64_t done = 0; done < steps;) {
@@ -111,15 +130,56 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps,
       gpu::dispatchCovering(cmd, pipeline, n, n);
     }
     current_ = 1 - current_;
+    stepIndex_ += k;
     done += k;
   }
+}
+
+void GpuStepper::recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt) {
+  if (steps == 0) return;
+  const bool full = tileDispatch_ == TileDispatch::Full ||
+                    (tileDispatch_ == TileDispatch::Auto && !preferActiveList(tiles_.lastListed(), tiles_.count()));
+  lastStepsFull_ = full;
+  for (uint64_t s = 0; s < steps; ++s) {
+    if (!full) {
+      beforeCompute(cmd);
+      tiles_.recordList(cmd, uint32_t(stepIndex_), true);
+    }
+    beforeCompute(cmd);
+    const shader::WaterTileStepParams p{.step = stepParams(params_, dt, 1),
+                                        .stepIndex = uint32_t(stepIndex_ + 1),
+                                        .tilesPerSide = tiles_.perSide(),
+                                        .fromList = full ? 0u : 1u,
+                                        .pad = 0};
+    gpu::bindPipeline(cmd, stepActive_, p);
+    gpu::bindSet(cmd, stepActive_, stepSets_[current_]);
+    if (full) {
+      gpu::dispatch(cmd, tiles_.perSide(), tiles_.perSide());
+      directTiles_ += tiles_.count();
+    } else {
+      tiles_.recordListedDispatch(cmd);
+    }
+    current_ = 1 - current_;
+    ++stepIndex_;
+  }
+  if (full) {
+    // Full steps need no list; one after them counts what the next step would
+    // dispatch, for the rule that chooses the next submission's way.
+    beforeCompute(cmd);
+    tiles_.recordList(cmd, uint32_t(stepIndex_), false);
+  }
+  tiles_.recordHostRead(cmd);
+}
+
+TileCounts GpuStepper::readTilesDispatched() {
+  return TileCounts{.listed = tiles_.takeListedTotal(), .direct = std::exchange(directTiles_, 0)};
 }
 
 void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude) {
   if (!(radius > 0.0f) || !std::isfinite(amplitude)) throw std::runtime_error("a drop needs a positive radius and a finite amplitude");
   beforeCompute(cmd);
   shader::WaterDropParams p{.n = params_.n, .h = float(params_.h()), .radius = radius, .amplitude = amplitude,
-                            .center = center, .pad = {}};
+                            .center = center, .markStep = uint32_t(stepIndex_), .pad = 0};
   gpu::bindPipeline(cmd, dropPipeline_, p);
   gpu::bindSet(cmd, dropPipeline_, dropSets_[current_]);
   gpu::dispatchCovering(cmd, dropPipeline_, params_.n, params_.n);
@@ -129,7 +189,7 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
                                   float restLevel) {
   beforeCompute(cmd);
   shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius), .newCenter = glm::vec4(to, restLevel),
-                              .n = params_.n, .h = float(params_.h()), .pad = {}};
+                              .n = params_.n, .h = float(params_.h()), .markStep = uint32_t(stepIndex_), .pad = 0};
   gpu::bindPipeline(cmd, spherePipeline_, p);
   gpu::bindSet(cmd, spherePipeline_, sphereSets_[current_]);
   gpu::dispatchCovering(cmd, spherePipeline_, params_.n, params_.n);
@@ -171,7 +231,9 @@ void GpuStepper::step(uint64_t steps, double dt) {
   // Bounded command buffers: a long run is split so that no single submission
   // holds an unbounded number of dispatches.
   constexpr uint64_t kDispatchesPerSubmit = 2048;
-  const uint64_t stepsPerSubmit = kernel_ == StepKernel::Tiled ? kDispatchesPerSubmit * halo_ : kDispatchesPerSubmit;
+  const uint64_t stepsPerSubmit = kernel_ == StepKernel::Tiled         ? kDispatchesPerSubmit * halo_
+                                  : kernel_ == StepKernel::ActiveTiles ? kDispatchesPerSubmit / 2  // list + step
+                                                                       : kDispatchesPerSubmit;
   for (uint64_t done = 0; done < steps;) {
     const uint64_t k = std::min(stepsPerSubmit, steps - done);
     gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");

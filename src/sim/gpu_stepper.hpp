@@ -9,13 +9,21 @@
 #include "sim/water_params.hpp"
 #include "sim/water_state.hpp"
 #include "sim/water_stats.hpp"
+#include "sim/water_tiles.hpp"
 
 namespace tp::sim {
 
 enum class StepKernel {
   OnePerDispatch,  // water_step.comp: one step per dispatch
   Tiled,           // water_step_tiled.comp: up to `halo` steps per dispatch in shared memory
+  ActiveTiles,     // water_step_active.comp: one step per dispatch over the tiles within reach of
+                   // motion (sim/water_tiles.hpp), or over all tiles, whichever is measured faster
 };
+
+// How an ActiveTiles stepper dispatches its steps: Auto chooses per
+// recordSteps() call by preferActiveList() from the last finished count;
+// Full and Active force one way (tests, benchmarks). Both give the same bits.
+enum class TileDispatch { Auto, Full, Active };
 
 // The water on the GPU: two state buffers (ping-pong) and the compute passes
 // that step, disturb and measure it. record*() add commands with the exact
@@ -50,15 +58,29 @@ class GpuStepper {
   StepKernel kernel() const { return kernel_; }
   uint32_t halo() const { return halo_; }
 
+  // ActiveTiles only. Takes effect from the next recordSteps().
+  void setTileDispatch(TileDispatch mode) { tileDispatch_ = mode; }
+  // Whether the last recordSteps() dispatched all tiles (true) or the active list.
+  bool lastStepsFull() const { return lastStepsFull_; }
+  // Tiles dispatched by steps since the last call. Call it when none of the
+  // stepper's submissions is running: it zeroes a device counter they add to.
+  // Inside a gpu::CountScope, add `listed` with gpu::addWorkgroups: the
+  // indirect dispatches could not count their workgroups when recorded.
+  TileCounts readTilesDispatched();
+  const WaterTiles& tiles() const { return tiles_; }
+
  private:
   void beforeCompute(const vk::raii::CommandBuffer& cmd);
+  void recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt);
 
   const gpu::Context& ctx_;
   WaterParams params_;
   StepKernel kernel_;
   uint32_t halo_;
-  gpu::Pipeline stepOne_, stepTiled_, dropPipeline_, spherePipeline_, statsPipeline_;
+  gpu::Pipeline stepOne_, stepTiled_, stepActive_, dropPipeline_, spherePipeline_, statsPipeline_;
   gpu::Buffer buffers_[2];
+  // Every kernel keeps the tile flags: drops and spheres mark them whatever steps.
+  WaterTiles tiles_;
   gpu::Buffer partials_;
   // Descriptor sets made once: stepSets_[k] reads buffers_[k] and writes the
   // other (for the kernel in use), inPlaceSets_[k] for the drop and sphere
@@ -66,7 +88,11 @@ class GpuStepper {
   gpu::DescriptorArena descriptors_;
   vk::DescriptorSet stepSets_[2], dropSets_[2], sphereSets_[2], statsSets_[2];
   uint32_t current_ = 0;
+  uint64_t stepIndex_ = 0;     // steps since the last reset: the index of the state in buffers_[current_]
   bool pendingWrite_ = false;  // a compute write that later compute work must wait for
+  TileDispatch tileDispatch_ = TileDispatch::Auto;
+  bool lastStepsFull_ = true;
+  uint64_t directTiles_ = 0;   // tiles of full-grid active-kernel steps recorded since the last read
 };
 
 }  // namespace tp::sim
