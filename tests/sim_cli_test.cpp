@@ -139,6 +139,28 @@ TEST(BenchCli, TilesBenchmarkWritesItsTable) {
   EXPECT_EQ(table.rows, 2 * 2);
 }
 
+// Six variants, skipping off and on: twelve rows. Bad sizes, frame counts and
+// paths: one clean line, nothing written.
+TEST(BenchCli, FrameBenchmarkWritesItsTableAndRefusesBadInput) {
+  ScratchDir dir;
+  const std::string csv = dir.file("frame.csv");
+  ProcessResult r = runTidepool("bench frame --validate --resolution 48x32 --frames 2 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("variant,skipping,gpu_ms,wall_ms,passes,dispatches,draws,workgroups,", 0), 0u)
+      << table.header;
+  EXPECT_EQ(table.rows, 6 * 2);
+  ScratchDir bad;
+  for (const char* size : {"48", "0x32", "5000x10"}) {
+    const std::string error =
+        expectCleanFailure(std::string("bench frame --resolution ") + size + " --csv " + bad.file("x.csv"), bad, {});
+    EXPECT_NE(error.find(size), std::string::npos) << error;
+  }
+  expectCleanFailure("bench frame --frames 0 --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench frame --csv /nonexistent/dir/x.csv", bad, {});
+  expectCleanFailure("bench frame --csv " + bad.file("x.txt"), bad, {});
+}
+
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");
