@@ -38,13 +38,18 @@ TP_INLINE float gridQuadHeight(vec4 corners, vec2 f) {
   return corners.w + (1.0f - f.x) * (corners.z - corners.w) + (1.0f - f.y) * (corners.y - corners.w);
 }
 
+// Whether a point's xz lies inside the water's square (edges excluded);
+// only there can it be under the surface.
+TP_INLINE bool overWaterSquare(WaterSurfaceParams s, vec2 xz) {
+  float size = float(s.grid.x) * s.placement.w;
+  vec2 local = vec2(xz.x - s.placement.x, xz.y - s.placement.z);
+  return local.x > 0.0f && local.y > 0.0f && local.x < size && local.y < size;
+}
+
 // Whether point p is in the water: over the water's square and below the mesh
 // (corners and fraction from gridQuadAt at p.xz).
 TP_INLINE bool underWaterSurface(WaterSurfaceParams s, vec3 p, vec4 corners, vec2 f) {
-  float size = float(s.grid.x) * s.placement.w;
-  vec2 local = vec2(p.x - s.placement.x, p.z - s.placement.z);
-  bool over = local.x > 0.0f && local.y > 0.0f && local.x < size && local.y < size;
-  return over && p.y < s.placement.y + gridQuadHeight(corners, f);
+  return overWaterSquare(s, vec2(p.x, p.z)) && p.y < s.placement.y + gridQuadHeight(corners, f);
 }
 
 TP_END

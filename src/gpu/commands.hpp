@@ -20,9 +20,6 @@ struct CommandCounts {
     workgroups += o.workgroups;
     return *this;
   }
-  friend CommandCounts operator-(CommandCounts a, const CommandCounts& b) {
-    return {a.dispatches - b.dispatches, a.draws - b.draws, a.workgroups - b.workgroups};
-  }
   bool operator==(const CommandCounts&) const = default;
 };
 

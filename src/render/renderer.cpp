@@ -456,7 +456,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     sim::checkHealth(stats, res_->stepsDone, std::numeric_limits<double>::infinity());
     const double area = double(scene_.water.extent) * scene_.water.extent;
     res_->waterEnergy = stats.energy / area;
-    res_->sleep.observe(stats, area);
+    res_->sleep.observe(res_->waterEnergy);
     res_->waterTop = Resources::highestWater(scene_, stats);
   }
   out.waterAsleep = res_->water && !simulated;

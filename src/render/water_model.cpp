@@ -167,10 +167,8 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
 }
 
 bool cameraOverWater(const scene::Scene& scene) {
-  // As underWaterSurface tests it, with the square's edge counted in.
-  const float half = 0.5f * scene.water.extent;
   const glm::vec3 c = scene.camera.position;
-  return std::abs(c.x) <= half && std::abs(c.z) <= half;
+  return shader::overWaterSquare(waterSurfaceParams(scene), glm::vec2(c.x, c.z));
 }
 
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water) {

@@ -23,8 +23,8 @@ void WaterSleep::wake() {
   asleep_ = false;
 }
 
-void WaterSleep::observe(const sim::WaterStats& stats, double area) {
-  quiet_ = stats.energy / area <= rule_.energyPerArea ? quiet_ + 1 : 0;
+void WaterSleep::observe(double energyPerArea) {
+  quiet_ = energyPerArea <= rule_.energyPerArea ? quiet_ + 1 : 0;
   if (quiet_ >= rule_.quietFrames) asleep_ = true;
 }
 

@@ -32,8 +32,8 @@ class WaterSleep {
   // once, since undisturbed it stays so to the bit.
   void restart(const sim::WaterStats& stats);
   void wake();
-  // The stats of a simulated frame's water.
-  void observe(const sim::WaterStats& stats, double area);
+  // The energy per unit area of a simulated frame's water.
+  void observe(double energyPerArea);
   bool asleep() const { return asleep_; }
 
  private:
