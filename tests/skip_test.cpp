@@ -155,9 +155,12 @@ TEST(SkipObjects, ObjectsWhollyOverTheWaterAreLeftOutOfTheCastsBelowIt) {
   EXPECT_EQ(render::sceneObjects(s).count, glm::uvec4(3, 2, 3, 2));  // no water top: every object
 }
 
-// The counters count what is recorded: the default scene's frame 1 steps its
-// water `substeps` times (one dispatch each, 64x1 groups over 128^2) and
-// measures it once (16x16 groups); its surfaces draw once per mesh.
+// The counters count what is recorded. The default scene's frame 1 steps
+// its water `substeps` times over every tile, as it must after a (re)start:
+// the plain kernel (64x1 groups over 128^2) but for the last step, which keeps
+// the tile flags (16x16 groups), then one workgroup lists the tiles the next
+// step would need, and the statistics measure the water (16x16 groups). Its
+// surfaces draw once per mesh.
 TEST_F(SkipTest, CountersMatchWhatThePassesRecord) {
   const scene::Scene s = scene::defaultScene();
   render::Renderer renderer(ctx(), s, kWidth, kHeight);
@@ -165,15 +168,58 @@ TEST_F(SkipTest, CountersMatchWhatThePassesRecord) {
   const auto f = renderer.render({.frame = 1});
   const uint32_t substeps = render::waterSubsteps(s.water);
   const uint32_t n = s.water.grid;
+  const uint64_t tiles = (n / 16) * (n / 16);
   const render::RecordedPass* simulate = find(f, "simulate");
   ASSERT_NE(simulate, nullptr);
-  EXPECT_EQ(simulate->counts.dispatches, substeps + 1);
-  EXPECT_EQ(simulate->counts.workgroups, uint64_t(substeps) * (n / 64) * n + (n / 16) * (n / 16));
+  EXPECT_EQ(simulate->counts.dispatches, substeps + 2);
+  EXPECT_EQ(simulate->counts.workgroups, uint64_t(substeps - 1) * (n / 64) * n + tiles + 1 + tiles);
   EXPECT_EQ(simulate->counts.draws, 0u);
   EXPECT_EQ(find(f, "ground")->counts.draws, 1u);
   EXPECT_EQ(find(f, "pool")->counts.draws, 2u);     // walls, floor
   EXPECT_EQ(find(f, "objects")->counts.draws, 1u);  // the sphere
   EXPECT_EQ(find(f, "water")->counts.draws, 1u);
+  gpu::CommandCounts sum;
+  for (const auto& p : f.passes) sum += p.counts;
+  EXPECT_EQ(sum, f.counts);
+}
+
+// A drop on calm water: the frame after the one that dropped it steps only
+// the tiles within reach of the ripple, and counts the tiles its indirect
+// dispatches launched. Each step is a one-workgroup list and a dispatch of
+// the listed tiles; step k after the drop can have changed only the cells
+// within k of its footprint, so it lists at most the tiles over that square
+// plus a ring of one tile, and at least the one under the drop's centre.
+TEST_F(SkipTest, ActiveTilesAreCountedWhenTheyAreLaunched) {
+  scene::Scene s = scene::defaultScene();
+  s.water.drops.clear();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  renderer.render({.frame = 0});
+  const scene::Drop drop{0.5f, 0.5f, 0.15f, 0.05f};
+  renderer.addDrop(drop);
+  renderer.render({.frame = 1});  // after a start every tile is stepped once
+  const auto f = renderer.render({.frame = 2});
+  const uint32_t substeps = render::waterSubsteps(s.water);
+  const uint32_t n = s.water.grid, perSide = n / 16;
+  const render::RecordedPass* simulate = find(f, "simulate");
+  ASSERT_NE(simulate, nullptr);
+  EXPECT_EQ(simulate->counts.dispatches, 2 * substeps + 1);
+  const uint64_t stats = uint64_t(perSide) * perSide;
+  ASSERT_GT(simulate->counts.workgroups, substeps + stats);
+  const uint64_t listed = simulate->counts.workgroups - substeps - stats;
+
+  const double h = double(s.water.extent) / n;
+  const glm::vec3 c = render::worldToGrid(s.water, {drop.x, 0.0f, drop.z});
+  const int lo = int(std::floor((c.x - drop.radius) / h)), hi = int(std::ceil((c.x + drop.radius) / h));
+  uint64_t bound = 0;
+  for (uint32_t k = substeps + 1; k <= 2 * substeps; ++k) {
+    // The footprint is square (the drop is at x = z): the same range on both axes.
+    const int t0 = std::max(0, (lo - int(k - 1)) / 16 - 1);
+    const int t1 = std::min(int(perSide) - 1, (hi + int(k - 1)) / 16 + 1);
+    bound += uint64_t(t1 - t0 + 1) * (t1 - t0 + 1);
+  }
+  EXPECT_GE(listed, substeps);
+  EXPECT_LE(listed, bound);
+  EXPECT_LT(bound, uint64_t(substeps) * perSide * perSide);  // the bound itself leaves tiles out
   gpu::CommandCounts sum;
   for (const auto& p : f.passes) sum += p.counts;
   EXPECT_EQ(sum, f.counts);

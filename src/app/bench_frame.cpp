@@ -26,6 +26,8 @@ std::vector<Variant> variants() {
       {"everything on", [](scene::Scene&) {}},
       {"no water", [](scene::Scene& s) { s.water.enabled = false; }},
       {"calm water", [](scene::Scene& s) { s.water.drops.clear(); }},
+      // One ripple in a corner: the simulation steps only the tiles it reaches.
+      {"a small ripple", [](scene::Scene& s) { s.water.drops = {{.x = 1.2f, .z = 1.2f, .radius = 0.15f, .amplitude = 0.04f}}; }},
       {"AO off", [](scene::Scene& s) { s.ao.enabled = false; }},
       {"objects out of view",
        [](scene::Scene& s) {

@@ -72,8 +72,10 @@ struct Renderer::Resources {
     graph.setCaching(skipping);
     uniformsRef = graph.buffer("frame uniforms", uniforms);
     if (scene.water.enabled) {
-      water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water),
-                    sim::StepKernel::OnePerDispatch);
+      // Steps only the tiles within reach of motion (sim/water_tiles.hpp), the
+      // same bits as the whole grid; with skipping off, every tile.
+      water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);
+      if (!skipping) water->setTileDispatch(sim::TileDispatch::Full);
       const auto gridIndices = waterGridIndices(scene.water.grid);
       indexCount = uint32_t(gridIndices.size());
       indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
@@ -449,6 +451,12 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   const bool simulated =
       std::any_of(out.passes.begin(), out.passes.end(), [](const RecordedPass& p) { return p.name == "simulate"; });
   if (simulated) {
+    // The tiles the steps' indirect dispatches launched, known only now.
+    const uint64_t listedTiles = res_->water->readTilesDispatched().listed;
+    out.counts.workgroups += listedTiles;
+    for (RecordedPass& p : out.passes) {
+      if (p.name == "simulate") p.counts.workgroups += listedTiles;
+    }
     res_->stepsDone += res_->pendingSteps;
     res_->pendingSteps = 0;
     res_->pendingDrops.clear();

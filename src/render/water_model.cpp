@@ -38,7 +38,7 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
 }
 
 sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
-  sim::GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::OnePerDispatch);
+  sim::GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);
   const uint64_t steps = uint64_t(frame) * waterSubsteps(scene.water);
   gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterSteps(cmd, stepper, scene, 0, steps); },
                      "water simulation");

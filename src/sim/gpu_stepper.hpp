@@ -86,7 +86,7 @@ class GpuStepper {
   // other (for the kernel in use), inPlaceSets_[k] for the drop and sphere
   // passes on buffers_[k], statsSets_[k] for the statistics of buffers_[k].
   gpu::DescriptorArena descriptors_;
-  vk::DescriptorSet stepSets_[2], dropSets_[2], sphereSets_[2], statsSets_[2];
+  vk::DescriptorSet stepSets_[2], plainSets_[2], dropSets_[2], sphereSets_[2], statsSets_[2];
   uint32_t current_ = 0;
   uint64_t stepIndex_ = 0;     // steps since the last reset: the index of the state in buffers_[current_]
   bool pendingWrite_ = false;  // a compute write that later compute work must wait for
