@@ -1,7 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
 
+#include "process.hpp"
 #include "scene/scene_file.hpp"
 
 namespace tp::test {
@@ -88,6 +94,72 @@ TEST(SceneFile, Boxes) {
   EXPECT_EQ(errorOf(R"({"boxes": {"size": [1, 1, 1]}})"), "shot.json: boxes: expected an array of objects");
   EXPECT_NE(errorOf(R"({"boxes": [{"size": [1, 0, 1]}]})").find("shot.json: boxes[].size.y"), std::string::npos);
   EXPECT_NE(errorOf(R"({"boxes": [{}, {}, {}, {}, {}]})").find("shot.json: boxes: at most 4, got 5"), std::string::npos);
+}
+
+}  // namespace tp::test
+
+namespace tp::test {
+
+// A saved scene reads back to the same scene, to the bit: every example
+// scene, and one whose values need all of a float's digits.
+TEST(SceneFile, SavedScenesReadBackToTheSameScene) {
+  std::vector<scene::Scene> scenes{scene::defaultScene()};
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(TIDEPOOL_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() == ".json") scenes.push_back(scene::loadSceneFile(entry.path().string()));
+  }
+  scene::Scene awkward = scene::defaultScene();
+  awkward.camera.position = {std::nextafter(3.2f, 4.0f), 1.0f / 3.0f, -4.6e-7f};
+  awkward.water.frameTime = 1.0f / 60.0f;
+  awkward.water.level = std::nextafter(-0.15f, 0.0f);
+  awkward.water.drops = {{0.1f, -0.7f, 0.123456789f, 1e-6f}};
+  awkward.spheres[0].path = {{0.0f, {0.0f, -0.2f, 0.0f}}, {2.5f, {1.0f / 7.0f, -0.2f, 0.5f}}};
+  awkward.boxes = {{.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}, .yawDegrees = 33.3f}};
+  awkward.ao = scene::aoPreset("baseline");
+  awkward.ao.radius = 0.7f;
+  awkward.render.refraction = "apparent";
+  awkward.sky.sunRadiance = {12345.678f, 1e-3f, 3.4028235e38f};
+  scenes.push_back(awkward);
+  for (const auto& s : scenes) {
+    const std::string text = scene::sceneToJson(s);
+    EXPECT_TRUE(scene::parseScene(text, "saved.json") == s) << text;
+  }
+  // Short where a short decimal is exact: what the scene file says, it says back.
+  EXPECT_NE(scene::sceneToJson(scene::defaultScene()).find("\"level\": -0.15,"), std::string::npos);
+}
+
+// The writer spells out every key the reader knows: the default scene's file
+// has the keys of scenes/default.json, which spells out the built-in scene.
+TEST(SceneFile, SavedSceneSpellsOutEveryKey) {
+  const auto keys = [](const nlohmann::json& j) {
+    std::vector<std::string> out;
+    const nlohmann::json flat = j.flatten();  // items() of a temporary would dangle
+    for (const auto& [path, value] : flat.items()) out.push_back(path);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  std::ifstream in(std::string(TIDEPOOL_SOURCE_DIR) + "/scenes/default.json");
+  const auto file = nlohmann::json::parse(in);
+  const auto written = keys(nlohmann::json::parse(scene::sceneToJson(scene::defaultScene()))), spelled = keys(file);
+  std::vector<std::string> missing, extra;
+  std::set_difference(spelled.begin(), spelled.end(), written.begin(), written.end(), std::back_inserter(missing));
+  std::set_difference(written.begin(), written.end(), spelled.begin(), spelled.end(), std::back_inserter(extra));
+  EXPECT_TRUE(missing.empty()) << "not written: " << ::testing::PrintToString(missing);
+  EXPECT_TRUE(extra.empty()) << "not in default.json: " << ::testing::PrintToString(extra);
+}
+
+TEST(SceneFile, SavingWritesAWholeFileOrNone) {
+  ScratchDir dir;
+  scene::Scene s = scene::defaultScene();
+  s.water.damping = 0.45f;
+  const std::string path = dir.file("saved.json");
+  scene::saveSceneFile(path, s);
+  EXPECT_TRUE(scene::loadSceneFile(path) == s);
+  EXPECT_THROW(scene::saveSceneFile("/nonexistent/dir/x.json", s), std::runtime_error);
+  EXPECT_THROW(scene::saveSceneFile(dir.file("x.txt"), s), std::runtime_error);
+  EXPECT_THROW(scene::saveSceneFile(dir.path().string(), s), std::runtime_error);
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 1u);  // saved.json alone: no temporary, nothing half-written
 }
 
 }  // namespace tp::test

@@ -1,5 +1,7 @@
 #include "scene/scene_file.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -7,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "io/atomic_file.hpp"
 
 namespace tp::scene {
 namespace {
@@ -87,6 +91,18 @@ class ObjectReader {
     }
   }
 
+  // An AO preset name: replaces every AO setting with the preset's.
+  void preset(const char* key, Ao& ao) {
+    std::string presetName;
+    text(key, presetName);
+    if (presetName.empty()) return;
+    try {
+      ao = aoPreset(presetName);
+    } catch (const std::invalid_argument& e) {
+      fail(name(key), e.what());
+    }
+  }
+
   void finish() const {
     for (const auto& [key, value] : object_.items()) {
       if (!seen_.count(key)) fail(name(key.c_str()), "is not a known key");
@@ -110,18 +126,59 @@ class ObjectReader {
   std::set<std::string> seen_;
 };
 
-}  // namespace
-
-Scene parseScene(const std::string& text, const std::string& origin) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
-    throw std::runtime_error(origin + ": not valid JSON (" + e.what() + ")");
+// The shortest decimal that reads back as the same float, as a JSON number:
+// a saved scene reloads to the same bits and still reads like the one typed.
+json exactNumber(float value) {
+  char text[32];
+  for (int digits = 6; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+    if (std::strtof(text, nullptr) == value) break;
   }
-  Scene s = defaultScene();
-  ObjectReader top(root, "", origin);
-  top.object("camera", [&](ObjectReader& r) {
+  return std::strtod(text, nullptr);
+}
+
+// Writes every field, with the same calls as ObjectReader reads them.
+class ObjectWriter {
+ public:
+  void number(const char* key, float& value) { object_[key] = exactNumber(value); }
+  void count(const char* key, unsigned& value) { object_[key] = value; }
+  void vec3(const char* key, glm::vec3& value) {
+    object_[key] = json::array({exactNumber(value.x), exactNumber(value.y), exactNumber(value.z)});
+  }
+  void flag(const char* key, bool& value) { object_[key] = value; }
+  void text(const char* key, std::string& value) { object_[key] = value; }
+  void preset(const char*, Ao&) {}  // the settings themselves are written, each one
+
+  template <typename T, typename F>
+  void objects(const char* key, std::vector<T>& values, F&& writeFields) {
+    json array = json::array();
+    for (T& element : values) {
+      ObjectWriter child;
+      writeFields(child, element);
+      array.push_back(std::move(child.object_));
+    }
+    object_[key] = std::move(array);
+  }
+
+  template <typename F>
+  void object(const char* key, F&& writeFields) {
+    ObjectWriter child;
+    writeFields(child);
+    object_[key] = std::move(child.object_);
+  }
+
+  void finish() const {}
+  const json& result() const { return object_; }
+
+ private:
+  json object_ = json::object();
+};
+
+// Every key of a scene file, once, for the reader and the writer alike: V
+// is ObjectReader (fills `s` from JSON) or ObjectWriter (turns `s` into JSON).
+template <typename V>
+void visitScene(V& v, Scene& s) {
+  v.object("camera", [&](auto& r) {
     r.vec3("position", s.camera.position);
     r.vec3("target", s.camera.target);
     r.vec3("up", s.camera.up);
@@ -129,7 +186,7 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("near", s.camera.nearPlane);
     r.number("far", s.camera.farPlane);
   });
-  top.object("sky", [&](ObjectReader& r) {
+  v.object("sky", [&](auto& r) {
     r.number("sun_elevation", s.sky.sunElevationDegrees);
     r.number("sun_azimuth", s.sky.sunAzimuthDegrees);
     r.number("sun_angular_radius", s.sky.sunAngularRadiusDegrees);
@@ -144,14 +201,14 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.count("texture_width", s.sky.textureWidth);
     r.text("image", s.sky.image);
   });
-  top.object("ground", [&](ObjectReader& r) {
+  v.object("ground", [&](auto& r) {
     r.number("half_extent", s.ground.halfExtent);
     r.number("height", s.ground.height);
     r.number("checker_size", s.ground.checkerSize);
     r.vec3("albedo_a", s.ground.albedoA);
     r.vec3("albedo_b", s.ground.albedoB);
   });
-  top.object("water", [&](ObjectReader& r) {
+  v.object("water", [&](auto& r) {
     r.flag("enabled", s.water.enabled);
     r.count("grid", s.water.grid);
     r.number("extent", s.water.extent);
@@ -163,53 +220,44 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("frame_time", s.water.frameTime);
     r.number("ior", s.water.ior);
     r.vec3("absorption", s.water.absorption);
-    r.objects("drops", s.water.drops, [](ObjectReader& d, scene::Drop& drop) {
+    r.objects("drops", s.water.drops, [](auto& d, scene::Drop& drop) {
       d.number("x", drop.x);
       d.number("z", drop.z);
       d.number("radius", drop.radius);
       d.number("amplitude", drop.amplitude);
     });
   });
-  top.object("pool", [&](ObjectReader& r) {
+  v.object("pool", [&](auto& r) {
     r.number("depth", s.pool.depth);
     r.vec3("wall_albedo", s.pool.wallAlbedo);
     r.number("tile_size", s.pool.tileSize);
     r.vec3("tile_albedo_a", s.pool.tileAlbedoA);
     r.vec3("tile_albedo_b", s.pool.tileAlbedoB);
   });
-  top.object("terrain", [&](ObjectReader& r) {
+  v.object("terrain", [&](auto& r) {
     r.number("amplitude", s.terrain.amplitude);
     r.number("frequency", s.terrain.frequency);
     r.count("octaves", s.terrain.octaves);
     r.number("persistence", s.terrain.persistence);
     r.count("seed", s.terrain.seed);
   });
-  top.objects("spheres", s.spheres, [](ObjectReader& r, scene::Sphere& sphere) {
+  v.objects("spheres", s.spheres, [](auto& r, scene::Sphere& sphere) {
     r.vec3("center", sphere.center);
     r.number("radius", sphere.radius);
     r.vec3("albedo", sphere.albedo);
-    r.objects("path", sphere.path, [](ObjectReader& k, scene::Keyframe& key) {
+    r.objects("path", sphere.path, [](auto& k, scene::Keyframe& key) {
       k.number("time", key.time);
       k.vec3("center", key.center);
     });
   });
-  top.objects("boxes", s.boxes, [](ObjectReader& r, scene::Box& box) {
+  v.objects("boxes", s.boxes, [](auto& r, scene::Box& box) {
     r.vec3("center", box.center);
     r.vec3("size", box.size);
     r.number("yaw", box.yawDegrees);
     r.vec3("albedo", box.albedo);
   });
-  top.object("ao", [&](ObjectReader& r) {
-    // A preset first, then any key given beside it overrides that key alone.
-    std::string preset;
-    r.text("preset", preset);
-    if (!preset.empty()) {
-      try {
-        s.ao = aoPreset(preset);
-      } catch (const std::invalid_argument& e) {
-        throw std::runtime_error(origin + ": ao.preset: " + e.what());
-      }
-    }
+  v.object("ao", [&](auto& r) {
+    r.preset("preset", s.ao);  // first: the keys beside it override their own values alone
     r.flag("enabled", s.ao.enabled);
     r.text("pattern", s.ao.pattern);
     r.count("kernel_size", s.ao.kernelSize);
@@ -222,11 +270,25 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     r.number("blur_depth_tolerance", s.ao.blurDepthTolerance);
     r.text("resolution", s.ao.resolution);
   });
-  top.object("render", [&](ObjectReader& r) {
+  v.object("render", [&](auto& r) {
     r.number("exposure", s.render.exposure);
     r.text("refraction", s.render.refraction);
     r.flag("caustics", s.render.caustics);
   });
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
+    throw std::runtime_error(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  Scene s = defaultScene();
+  ObjectReader top(root, "", origin);
+  visitScene(top, s);
   top.finish();
   if (!s.sky.image.empty() && std::filesystem::path(s.sky.image).is_relative()) {
     s.sky.image = (std::filesystem::path(origin).parent_path() / s.sky.image).string();
@@ -237,6 +299,25 @@ Scene parseScene(const std::string& text, const std::string& origin) {
     throw std::runtime_error(origin + ": " + e.what());
   }
   return s;
+}
+
+std::string sceneToJson(const Scene& scene) {
+  Scene copy = scene;
+  ObjectWriter top;
+  visitScene(top, copy);
+  return top.result().dump(2) + "\n";
+}
+
+void saveSceneFile(const std::string& path, const Scene& scene) {
+  io::requireExtension(path, ".json");
+  io::AtomicFile file(path);
+  {
+    std::ofstream out(file.tempPath(), std::ios::binary);
+    out << sceneToJson(scene);
+    out.close();
+    if (!out) throw std::runtime_error("cannot write scene file " + path);
+  }
+  file.commit();
 }
 
 Scene loadSceneFile(const std::string& path) {

@@ -13,4 +13,11 @@ Scene loadSceneFile(const std::string& path);
 // The same, from text; `origin` names the source in messages.
 Scene parseScene(const std::string& text, const std::string& origin);
 
+// The scene as a scene file that reads back to the same scene, every field
+// spelled out (no AO preset: its settings). A sky image path is written as
+// the scene holds it (loaded scenes hold it resolved).
+std::string sceneToJson(const Scene& scene);
+// Writes sceneToJson to a .json path, whole or not at all (io::AtomicFile).
+void saveSceneFile(const std::string& path, const Scene& scene);
+
 }  // namespace tp::scene
