@@ -50,9 +50,11 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
-inline ProcessResult runTidepool(const std::string& args, const ScratchDir& dir) {
+// `env`: put before the executable, e.g. "DISPLAY=:3" or "env -u DISPLAY".
+inline ProcessResult runTidepool(const std::string& args, const ScratchDir& dir, const std::string& env = "") {
   const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string command = std::string(TIDEPOOL_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const std::string command =
+      env + (env.empty() ? "" : " ") + std::string(TIDEPOOL_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
   int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -74,8 +76,8 @@ inline int lineCount(const std::string& text) {
 // "tidepool: error: ", an exit code that is neither 0 nor a crash, and the
 // scratch directory left as it was) and returns that line.
 inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
-                                      const std::vector<std::string>& filesBefore) {
-  ProcessResult r = runTidepool(args, dir);
+                                      const std::vector<std::string>& filesBefore, const std::string& env = "") {
+  ProcessResult r = runTidepool(args, dir, env);
   EXPECT_NE(r.exitCode, 0) << args;
   EXPECT_LT(r.exitCode, 128) << "crashed: " << args;
   EXPECT_EQ(lineCount(r.err), 1) << args << "\nstderr:\n" << r.err;

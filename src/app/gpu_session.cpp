@@ -12,7 +12,9 @@ void addGpuOptions(CLI::App* command, bool& validate, std::string& device) {
 }
 
 GpuSession::GpuSession(bool validate, const std::string& device)
-    : context_(gpu::ContextOptions{.validation = validate, .deviceName = device}) {
+    : GpuSession(gpu::ContextOptions{.validation = validate, .deviceName = device}) {}
+
+GpuSession::GpuSession(const gpu::ContextOptions& options) : context_(options) {
   context_.validationLog().setEcho(true);
 }
 

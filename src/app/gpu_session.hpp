@@ -14,6 +14,8 @@ void addGpuOptions(CLI::App* command, bool& validate, std::string& device);
 class GpuSession {
  public:
   GpuSession(bool validate, const std::string& device);
+  // With the rest of the context's options too (a window's extensions).
+  explicit GpuSession(const gpu::ContextOptions& options);
   gpu::Context& context() { return context_; }
   // Prints the validation count (when validating) and returns the exit code:
   // 0, or 3 when the validation layer said anything.

@@ -7,6 +7,7 @@
 #include "app/export_command.hpp"
 #include "app/render_command.hpp"
 #include "app/sim_command.hpp"
+#include "app/view_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
@@ -20,6 +21,8 @@ int main(int argc, char** argv) {
   CLI::App* exporter = tp::app::addExportCommand(app, exportOptions);
   tp::app::BenchOptions benchOptions;
   CLI::App* bench = tp::app::addBenchCommand(app, benchOptions);
+  tp::app::ViewOptions viewOptions;
+  CLI::App* view = tp::app::addViewCommand(app, viewOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -40,6 +43,7 @@ int main(int argc, char** argv) {
     if (sim->parsed()) return tp::app::runSim(*sim, simOptions);
     if (exporter->parsed()) return tp::app::runExport(exportOptions);
     if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
+    if (view->parsed()) return tp::app::runView(viewOptions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tidepool: error: %s\n", e.what());
     return 1;

@@ -15,13 +15,9 @@
 #include "render/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "render/water_model.hpp"
-#include "scene/scene_file.hpp"
 
 namespace tp::app {
 namespace {
-
-constexpr uint32_t kMaxSide = 16384;
-constexpr uint64_t kMaxPixels = uint64_t(8192) * 8192;
 
 void printProfile(const render::RenderedFrame& frame) {
   std::printf("%-20s %10s %10s %6s %11s\n", "pass", "GPU ms", "dispatches", "draws", "workgroups");
@@ -129,11 +125,9 @@ render::RenderedFrame renderReferenceFrame(GpuSession& session, const scene::Sce
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a frame offscreen to EXR (linear RGBA) and optionally PNG");
-  cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see README); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--width", o.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
-  cmd->add_option("--height", o.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxSide));
+  addSceneOptions(cmd, o.scene);
+  cmd->add_option("--width", o.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxFrameSide));
+  cmd->add_option("--height", o.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxFrameSide));
   cmd->add_option("--frame", o.frame, "Frame number: the water after N frames of water.frame_time from the scene's start")
       ->capture_default_str();
   cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file)")->type_name("PATH")->capture_default_str();
@@ -155,13 +149,6 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->delimiter(',')
       ->type_name("LIST")
       ->check(CLI::IsMember({"Z", "N", "P", "ao", "ao_raw", "ao_ref"}));
-  auto* noAo = cmd->add_flag("--no-ao", o.noAo, "Switch the scene's ambient occlusion off for this render");
-  cmd->add_option("--preset", o.aoPreset,
-                  "AO preset for this render, replacing the scene's ao settings: fast, balanced, quality, or "
-                  "baseline (the LearnOpenGL-style SSAO they are measured against)")
-      ->type_name("NAME")
-      ->check(CLI::IsMember({"fast", "balanced", "quality", "baseline"}))
-      ->excludes(noAo);
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")
@@ -173,10 +160,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
 }
 
 int runRender(const RenderOptions& o) {
-  if (uint64_t(o.width) * o.height > kMaxPixels) {
-    throw std::runtime_error(std::to_string(o.width) + "x" + std::to_string(o.height) + " is over the limit of " +
-                             std::to_string(kMaxPixels) + " pixels");
-  }
+  checkFramePixels(o.width, o.height);
   // Check every output before any work, so a bad path costs nothing and leaves nothing.
   io::requireExtension(o.out, ".exr");
   io::checkWritable(o.out);
@@ -184,9 +168,7 @@ int runRender(const RenderOptions& o) {
     io::requireExtension(o.png, ".png");
     io::checkWritable(o.png);
   }
-  scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
-  if (!o.aoPreset.empty()) scene.ao = scene::aoPreset(o.aoPreset);
-  if (o.noAo) scene.ao.enabled = false;
+  const scene::Scene scene = loadScene(o.scene);
   const bool aoAovs = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
   if (aoAovs && (o.reference || !scene.ao.enabled)) {
     throw std::runtime_error("--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "

@@ -3,10 +3,12 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_options.hpp"
+
 namespace tp::app {
 
 struct RenderOptions {
-  std::string scenePath;  // empty: the built-in default scene
+  SceneChoice scene;  // --scene, --no-ao, --preset
   uint32_t width = 1280;
   uint32_t height = 720;
   uint32_t frame = 0;
@@ -19,8 +21,6 @@ struct RenderOptions {
   bool profile = false;
   bool noSkip = false;            // record every pass (RendererOptions::skipping off)
   std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
-  bool noAo = false;              // switch the scene's ambient occlusion off for this render
-  std::string aoPreset;           // empty: the scene's own AO settings
   bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
   uint32_t samples = 64;          // per pixel, with --reference
 };

@@ -44,6 +44,13 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, const Contex
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
+  const auto available = context.enumerateInstanceExtensionProperties();
+  for (const std::string& name : options.surfaceExtensions) {
+    const bool found = std::any_of(available.begin(), available.end(),
+                                   [&](const vk::ExtensionProperties& e) { return name == e.extensionName.data(); });
+    if (!found) throw std::runtime_error("the Vulkan loader has no " + name + ", which a window's surface needs");
+    extensions.push_back(name.c_str());
+  }
   static constexpr vk::ValidationFeatureEnableEXT enables[] = {
       vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
   vk::StructureChain<vk::InstanceCreateInfo, vk::ValidationFeaturesEXT, vk::DebugUtilsMessengerCreateInfoEXT> chain{
@@ -117,7 +124,22 @@ vk::raii::PhysicalDevice choosePhysicalDevice(const vk::raii::Instance& instance
   return std::move(devices[*best]);
 }
 
-vk::raii::Device createDevice(const vk::raii::PhysicalDevice& physical, uint32_t family) {
+bool hasDeviceExtension(const vk::raii::PhysicalDevice& device, const char* name) {
+  for (const auto& e : device.enumerateDeviceExtensionProperties()) {
+    if (std::string(e.extensionName.data()) == name) return true;
+  }
+  return false;
+}
+
+vk::raii::Device createDevice(const vk::raii::PhysicalDevice& physical, uint32_t family, bool swapchain) {
+  std::vector<const char*> extensions;
+  if (swapchain) {
+    if (!hasDeviceExtension(physical, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
+      throw std::runtime_error(std::string(physical.getProperties().deviceName.data()) + " has no " +
+                               VK_KHR_SWAPCHAIN_EXTENSION_NAME + ": it cannot show a window");
+    }
+    extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  }
   float priority = 1.0f;
   vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = family, .queueCount = 1, .pQueuePriorities = &priority};
   vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan12Features,
@@ -126,6 +148,8 @@ vk::raii::Device createDevice(const vk::raii::PhysicalDevice& physical, uint32_t
           vk::DeviceCreateInfo{
               .queueCreateInfoCount = 1,
               .pQueueCreateInfos = &queueInfo,
+              .enabledExtensionCount = uint32_t(extensions.size()),
+              .ppEnabledExtensionNames = extensions.data(),
           },
           vk::PhysicalDeviceFeatures2{},
           vk::PhysicalDeviceVulkan12Features{.hostQueryReset = VK_TRUE},
@@ -149,7 +173,7 @@ Context::Context(const ContextOptions& options)
       memoryProperties_(physical_.getMemoryProperties()),
       queueFamily_(*universalQueueFamily(physical_)),
       timestampValidBits_(physical_.getQueueFamilyProperties()[queueFamily_].timestampValidBits),
-      device_(createDevice(physical_, queueFamily_)),
+      device_(createDevice(physical_, queueFamily_, options.swapchain)),
       queue_(device_, queueFamily_, 0),
       commandPool_(device_, vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                       .queueFamilyIndex = queueFamily_}) {}

@@ -2,6 +2,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gpu/validation_log.hpp"
 #include "gpu/vulkan.hpp"
@@ -14,6 +15,11 @@ struct ContextOptions {
   // Substring of the device name; empty means $TIDEPOOL_DEVICE, then the best
   // device by type (discrete, integrated, virtual, CPU).
   std::string deviceName = {};
+  // For a window: the instance extensions its surface needs (the window
+  // system names them, e.g. glfwGetRequiredInstanceExtensions) and
+  // VK_KHR_swapchain on the device. Empty and false: headless, as before.
+  std::vector<std::string> surfaceExtensions = {};
+  bool swapchain = false;
 };
 
 // Instance, device and the one queue tidepool uses. Members are declared in
@@ -24,6 +30,7 @@ class Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
+  const vk::raii::Instance& instance() const { return instance_; }
   const vk::raii::Device& device() const { return device_; }
   const vk::raii::PhysicalDevice& physicalDevice() const { return physical_; }
   const vk::raii::Queue& queue() const { return queue_; }

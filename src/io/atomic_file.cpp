@@ -24,10 +24,14 @@ void checkWritable(const std::string& path) {
   }
 }
 
-void requireExtension(const std::string& path, const std::string& extension) {
+bool hasExtension(const std::string& path, const std::string& extension) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != extension) throw std::runtime_error("output " + path + " must end in " + extension);
+  return ext == extension;
+}
+
+void requireExtension(const std::string& path, const std::string& extension) {
+  if (!hasExtension(path, extension)) throw std::runtime_error("output " + path + " must end in " + extension);
 }
 
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {

@@ -30,6 +30,9 @@ class AtomicFile {
 // Throws when a file could not be created at `path` (checked before long work starts).
 void checkWritable(const std::string& path);
 
+// Whether `path` ends in `extension` (".exr", ".png"), case-insensitive.
+bool hasExtension(const std::string& path, const std::string& extension);
+
 // Throws unless `path` ends in `extension` (".exr", ".png"), case-insensitive.
 void requireExtension(const std::string& path, const std::string& extension);
 

@@ -1,0 +1,28 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/scene_options.hpp"
+
+namespace tp::app {
+
+struct ViewOptions {
+  SceneChoice scene;  // --scene, --no-ao, --preset
+  std::string size = "1280x720";
+  uint32_t frames = 0;  // 0: run until the window is closed
+  std::string screenshot;
+  std::vector<std::string> scriptDrops;  // FRAME:X,Z,RADIUS,AMP
+  std::string scriptResize;              // FRAME:WxH
+  bool validate = false;
+  std::string device;
+};
+
+// Adds `tidepool view` and its options to the command line.
+CLI::App* addViewCommand(CLI::App& app, ViewOptions& options);
+
+// Returns the process exit code; throws std::exception on failure.
+int runView(const ViewOptions& options);
+
+}  // namespace tp::app

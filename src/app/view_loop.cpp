@@ -1,0 +1,177 @@
+#include "app/view_loop.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/frame_presenter.hpp"
+#include "app/gpu_session.hpp"
+#include "app/swapchain.hpp"
+#include "app/window.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image_io.hpp"
+#include "render/renderer.hpp"
+
+namespace tp::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct ViewStats {
+  uint32_t framesShown = 0;
+  double seconds = 0.0;        // from the first frame's start to the last one's present
+  double renderSeconds = 0.0;  // in Renderer::render, readback included
+  double showSeconds = 0.0;    // in FramePresenter::show and swapchain recreation, waits for FIFO included
+  uint32_t recreations = 0;
+  vk::Extent2D window;
+};
+
+// The framebuffer's size once the window is not minimised (until then it
+// sleeps in the window system); 0 x 0 when it was closed meanwhile.
+vk::Extent2D waitForArea(Window& window) {
+  while (window.minimised()) {
+    if (window.shouldClose()) return {0, 0};
+    window.waitEvents();
+  }
+  return window.framebufferSize();
+}
+
+vk::Extent2D firstArea(Window& window) {
+  const vk::Extent2D area = waitForArea(window);
+  if (area.width == 0) throw std::runtime_error("the window was closed before its first frame");
+  return area;
+}
+
+// The window, the swapchain on it, and the showing of one frame.
+class Display {
+ public:
+  Display(const gpu::Context& ctx, Window& window, vk::Extent2D frameSize)
+      : ctx_(ctx),
+        window_(window),
+        surface_(window.createSurface(ctx.instance())),
+        swapchain_(ctx, surface_, firstArea(window)),
+        presenter_(ctx, frameSize) {}
+
+  // Shows the frame, recreating the swapchain (and showing it again) until
+  // it is presented. Returns false when the window was closed while
+  // minimised: the frame was not shown.
+  bool show(const std::vector<std::uint8_t>& rgba, ViewStats& stats) {
+    for (;;) {
+      const vk::Extent2D area = waitForArea(window_);
+      if (area.width == 0) return false;
+      // A resize the swapchain has already followed (after an out-of-date
+      // present) needs nothing more.
+      const bool resized = window_.takeResized() && area != swapchain_.extent();
+      if (stale_ || resized) {
+        // The one wait for idle: the old swapchain's images and semaphores
+        // may still be in use by a present.
+        ctx_.queue().waitIdle();
+        if (!swapchain_.recreate(area)) {  // the surface has no area yet
+          window_.waitEvents();
+          continue;
+        }
+        stale_ = false;
+        ++stats.recreations;
+      }
+      switch (presenter_.show(swapchain_, rgba)) {
+        case FramePresenter::Result::Presented: return true;
+        case FramePresenter::Result::PresentedSuboptimal: stale_ = true; return true;
+        case FramePresenter::Result::OutOfDate: stale_ = true; break;
+      }
+    }
+  }
+  vk::Extent2D extent() const { return swapchain_.extent(); }
+
+ private:
+  const gpu::Context& ctx_;
+  Window& window_;
+  vk::raii::SurfaceKHR surface_;
+  Swapchain swapchain_;
+  FramePresenter presenter_;
+  bool stale_ = false;  // the swapchain no longer matches the window
+};
+
+void saveScreenshot(const std::string& path, const render::RenderedFrame& frame) {
+  if (io::hasExtension(path, ".exr")) {
+    io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, frame.rgba};
+    io::writeExr(path, image, std::vector<io::PixelType>(4, io::PixelType::Float),
+                 io::ExrAttributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC});
+  } else {
+    io::writePng(path, frame.width, frame.height, frame.srgb);
+  }
+}
+
+// The frames, until the window closes or config.frames were shown; the
+// last one shown is kept in `last` (with its linear RGBA when the screenshot
+// is an EXR).
+ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& config, render::RenderedFrame& last) {
+  Display display(ctx, window, {config.width, config.height});
+  render::Renderer renderer(ctx, config.scene, config.width, config.height);
+  ViewStats stats;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point titled = start;
+  for (uint32_t frame = 0; !config.frames || frame < *config.frames; ++frame) {
+    window.pollEvents();
+    // Minimised: nothing is rendered, the loop sleeps in the window system.
+    if (window.shouldClose() || waitForArea(window).width == 0) break;
+    if (config.resize && config.resize->frame == frame) window.resize(config.resize->width, config.resize->height);
+    for (const ScriptedDrop& d : config.drops) {
+      if (d.frame == frame) renderer.addDrop(d.drop);
+    }
+    const bool final = config.frames && frame + 1 == *config.frames;
+    const Clock::time_point renderStart = Clock::now();
+    render::RenderedFrame rendered =
+        renderer.render({.frame = frame, .hdr = final && io::hasExtension(config.screenshot, ".exr"), .ldr = true});
+    const Clock::time_point showStart = Clock::now();
+    stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
+    const bool shown = display.show(rendered.srgb, stats);
+    stats.showSeconds += secondsSince(showStart);
+    if (!shown) break;
+    ++stats.framesShown;
+    last = std::move(rendered);
+    if (secondsSince(titled) > 0.5) {
+      titled = Clock::now();
+      char title[96];
+      std::snprintf(title, sizeof title, "tidepool view - frame %u - %.1f fps", frame,
+                    stats.framesShown / secondsSince(start));
+      window.setTitle(title);
+    }
+  }
+  stats.seconds = secondsSince(start);
+  stats.window = display.extent();
+  return stats;
+}
+
+}  // namespace
+
+int runViewer(const ViewConfig& config) {
+  Window window(config.width, config.height, "tidepool view");
+  GpuSession session(gpu::ContextOptions{.validation = config.validate,
+                                         .deviceName = config.device,
+                                         .surfaceExtensions = window.requiredInstanceExtensions(),
+                                         .swapchain = true});
+  render::RenderedFrame last;
+  const ViewStats stats = showFrames(session.context(), window, config, last);
+  const double perFrame = stats.framesShown > 0 ? 1000.0 / stats.framesShown : 0.0;
+  std::printf("view: %u frames at %ux%u in %.2f s, %.2f fps (render %.1f ms, show %.1f ms per frame) on %s; "
+              "window %ux%u, swapchain recreations: %u\n",
+              stats.framesShown, config.width, config.height, stats.seconds,
+              stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, stats.renderSeconds * perFrame,
+              stats.showSeconds * perFrame, session.context().deviceName().c_str(), stats.window.width,
+              stats.window.height, stats.recreations);
+  if (config.frames && stats.framesShown < *config.frames) {
+    throw std::runtime_error("the window was closed after " + std::to_string(stats.framesShown) + " of " +
+                             std::to_string(*config.frames) + " frames" +
+                             (config.screenshot.empty() ? "" : ": no screenshot written"));
+  }
+  if (!config.screenshot.empty()) {
+    saveScreenshot(config.screenshot, last);
+    std::printf("wrote %s (frame %u, %ux%u)\n", config.screenshot.c_str(), stats.framesShown - 1, last.width,
+                last.height);
+  }
+  return session.finish();
+}
+
+}  // namespace tp::app

@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace tp::app {
+
+// A drop the scripted run makes just before it renders `frame` (that frame
+// shows the water one frame after it): a testing aid.
+struct ScriptedDrop {
+  uint32_t frame = 0;
+  scene::Drop drop;
+};
+
+// A window size the scripted run asks for just before it renders `frame`.
+struct ScriptedResize {
+  uint32_t frame = 0;
+  uint32_t width = 0, height = 0;
+};
+
+struct ViewConfig {
+  scene::Scene scene;
+  uint32_t width = 1280, height = 720;  // the frame's size, and the window's at first
+  std::optional<uint32_t> frames;       // stop after this many frames shown; none: run until closed
+  std::string screenshot;               // with `frames`: save the last frame shown here (.exr float or .png)
+  std::vector<ScriptedDrop> drops;
+  std::optional<ScriptedResize> resize;
+  bool validate = false;
+  std::string device;
+};
+
+// Opens the window and shows frames 0, 1, 2, ... of the scene, one frame
+// number per frame shown, until the window is closed or `frames` were
+// shown; then writes the screenshot. Returns the exit code (GpuSession::finish);
+// throws one line on failure, a window closed before the screenshot's frame
+// included.
+int runViewer(const ViewConfig& config);
+
+}  // namespace tp::app

@@ -1,0 +1,49 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpu/vulkan.hpp"
+
+struct GLFWwindow;
+
+namespace tp::app {
+
+// A GLFW window with no client API, for a Vulkan surface. It initialises
+// GLFW and terminates it when destroyed: one Window at a time. Escape closes
+// it.
+class Window {
+ public:
+  // Throws one line when no window can be opened: no display (DISPLAY unset
+  // or unreachable), or GLFW without Vulkan.
+  Window(uint32_t width, uint32_t height, const std::string& title);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // The instance extensions a surface on this window system needs.
+  std::vector<std::string> requiredInstanceExtensions() const;
+  // Destroy the surface before the instance and before this window.
+  vk::raii::SurfaceKHR createSurface(const vk::raii::Instance& instance) const;
+
+  // In pixels; 0 x 0 while minimised on some window systems.
+  vk::Extent2D framebufferSize() const;
+  // Iconified, or a framebuffer with no area: nothing to draw into.
+  bool minimised() const;
+  bool shouldClose() const;
+  void pollEvents();
+  // Blocks until an event arrives (while minimised nothing is drawn).
+  void waitEvents();
+  // Asks the window system for a new size; framebufferSize() follows when it
+  // has done it.
+  void resize(uint32_t width, uint32_t height);
+  // Whether the framebuffer changed size since the last call.
+  bool takeResized();
+  void setTitle(const std::string& title);
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  bool resized_ = false;
+};
+
+}  // namespace tp::app
