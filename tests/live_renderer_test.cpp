@@ -95,4 +95,61 @@ TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
   EXPECT_THROW(renderer.moveSphere(1, to), std::out_of_range);
 }
 
+// New water dynamics go on from the water's state: after them the renderer's
+// water is, to the bit, a stepper's that took the same steps under the old
+// parameters and then the new (with the new substeps); going back restarts
+// with the new parameters, as a renderer made with them.
+TEST_F(LiveRendererTest, NewWaterDynamicsGoOnFromTheState) {
+  const scene::Scene s = scene::defaultScene();
+  scene::Water w = s.water;
+  w.waveSpeed = 1.5f;  // more substeps per frame
+  w.damping = 0.8f;
+  w.boundary = "wrap";
+  w.maxSlope = 0.2f;
+  const uint32_t before = render::waterSubsteps(s.water), after = render::waterSubsteps(w);
+  ASSERT_NE(before, after);
+
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  for (uint32_t frame = 0; frame <= 3; ++frame) renderer.render({.frame = frame});
+  renderer.setWaterDynamics(w);
+  EXPECT_EQ(renderer.scene().water, w);
+  renderer.render({.frame = 4});
+  renderer.render({.frame = 5});
+  sim::GpuStepper stepper(ctx(), render::waterParams(s.water), render::waterInitialState(s.water),
+                          sim::StepKernel::OnePerDispatch);
+  stepper.step(3 * before, render::waterStep(s.water));
+  stepper.setParams(render::waterParams(w));
+  stepper.step(2 * after, render::waterStep(w));
+  const sim::WaterState expected = stepper.download(), water = renderer.waterState();
+  EXPECT_TRUE(water.u == expected.u);
+  EXPECT_TRUE(water.v == expected.v);
+
+  scene::Scene changed = s;
+  changed.water = w;
+  render::Renderer fresh(ctx(), changed, kWidth, kHeight);
+  const auto a = renderer.render({.frame = 1}), b = fresh.render({.frame = 1});
+  EXPECT_TRUE(a.rgba == b.rgba);
+  EXPECT_TRUE(renderer.waterState().u == fresh.waterState().u);
+
+  scene::Water grid = w;
+  grid.grid = 64;
+  EXPECT_THROW(renderer.setWaterDynamics(grid), std::invalid_argument);
+  scene::Water negative = w;
+  negative.damping = -1.0f;
+  EXPECT_ANY_THROW(renderer.setWaterDynamics(negative));
+  EXPECT_EQ(renderer.scene().water, w);  // a refused change changes nothing
+}
+
+// A parameter change wakes sleeping water.
+TEST_F(LiveRendererTest, NewWaterDynamicsWakeSleepingWater) {
+  scene::Scene s = scene::defaultScene();
+  s.water.drops.clear();
+  render::Renderer renderer(ctx(), s, kWidth, kHeight);
+  EXPECT_TRUE(renderer.render({.frame = 1}).waterAsleep);
+  scene::Water w = s.water;
+  w.damping = 0.1f;
+  renderer.setWaterDynamics(w);
+  EXPECT_FALSE(renderer.render({.frame = 2}).waterAsleep);
+}
+
 }  // namespace tp::test

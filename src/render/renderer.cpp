@@ -133,7 +133,7 @@ struct Renderer::Resources {
                      water->recordSphereMove(pc.cmd, worldToGrid(live.water, m.from), worldToGrid(live.water, m.to),
                                              m.radius, live.water.level);
                    }
-                   recordWaterSteps(pc.cmd, *water, live, stepsDone, pendingSteps);
+                   recordWaterSteps(pc.cmd, *water, live, waterTime(stepsDone), pendingSteps);
                    water->recordStats(pc.cmd, waterStep(live.water));
                  },
                  {.cached = false, .runIf = [this] { return simulating; }});
@@ -339,6 +339,14 @@ struct Renderer::Resources {
   uint32_t indexCount = 0;
   uint32_t substeps = 1;
   uint64_t stepsDone = 0;
+  // The water's clock: it was at frame `frameBase` after `stepBase` steps,
+  // and takes `substeps` steps per frame since (setWaterDynamics re-bases it).
+  uint32_t frameBase = 0;
+  uint64_t stepBase = 0;
+  // Scene time after `steps` steps, for the paths of the spheres.
+  double waterTime(uint64_t steps) const {
+    return double(frameBase) * live.water.frameTime + double(steps - stepBase) * waterStep(live.water);
+  }
   uint64_t pendingSteps = 0;
   std::vector<ResourceRef> waterStateRefs;
   std::vector<scene::Drop> pendingDrops;  // addDrop()'s, for the next frame
@@ -395,11 +403,36 @@ void Renderer::moveSphere(size_t index, glm::vec3 center) {
   }
   scene::Sphere& sphere = scene_.spheres[index];
   // Where it is now: on its path, at the time the water has reached.
-  const float now = res_->water ? float(double(res_->stepsDone) * waterStep(scene_.water)) : 0.0f;
+  const float now = res_->water ? float(res_->waterTime(res_->stepsDone)) : 0.0f;
   const glm::vec3 from = scene::sphereCenterAt(sphere, now);
   sphere.path.clear();
   sphere.center = center;
   if (res_->water && from != center) res_->pendingMoves.push_back({from, center, sphere.radius});
+}
+
+void Renderer::setWaterDynamics(const scene::Water& water) {
+  if (!res_->water) throw std::runtime_error("the scene has no water");
+  scene::Water others = water;
+  others.waveSpeed = scene_.water.waveSpeed;
+  others.damping = scene_.water.damping;
+  others.boundary = scene_.water.boundary;
+  others.maxSlope = scene_.water.maxSlope;
+  if (others != scene_.water) {
+    throw std::invalid_argument("only the wave speed, damping, boundary and max slope change on a live renderer");
+  }
+  // Everything that can refuse the change, before any of it is made.
+  const sim::WaterParams params = waterParams(water);
+  sim::validate(params);
+  const uint32_t substeps = waterSubsteps(water);
+  // Re-base the clock at the frame the water has reached (a whole number of
+  // the old frames since the last base: render() steps whole frames).
+  res_->frameBase += uint32_t((res_->stepsDone - res_->stepBase) / res_->substeps);
+  res_->stepBase = res_->stepsDone;
+  res_->substeps = substeps;
+  scene_.water = water;
+  res_->water->setParams(params);
+  res_->sleep = WaterSleep(sleepRule(water));  // its threshold follows the wave speed
+  res_->sleep.wake();
 }
 
 sim::WaterState Renderer::waterState() const {
@@ -426,15 +459,20 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     // start, whatever was rendered before: going back restarts it. Sleeping
     // water skips ahead without a step.
     const double dt = waterStep(scene_.water);
-    const uint64_t target = uint64_t(request.frame) * res_->substeps;
-    if (target < res_->stepsDone) {
+    const auto stepsAt = [&](uint32_t frame) {
+      return res_->stepBase + uint64_t(frame - res_->frameBase) * res_->substeps;
+    };
+    if (request.frame < res_->frameBase || stepsAt(request.frame) < res_->stepsDone) {
+      // From the start, with the water's parameters as they now are.
       res_->water->reset(waterInitialState(scene_.water));
       for (ResourceRef state : res_->waterStateRefs) res_->graph.touch(state);  // uploaded outside the graph
-      res_->stepsDone = 0;
+      res_->stepsDone = res_->stepBase = 0;
+      res_->frameBase = 0;
       res_->restartWater(scene_, res_->water->stats(dt));
     }
+    const uint64_t target = stepsAt(request.frame);
     const bool disturbed = !res_->pendingDrops.empty() || !res_->pendingMoves.empty();
-    if (disturbed || bodyMoves(scene_, double(res_->stepsDone) * dt, double(target) * dt)) {
+    if (disturbed || bodyMoves(scene_, res_->waterTime(res_->stepsDone), res_->waterTime(target))) {
       res_->sleep.wake();
     }
     if (res_->skipping && res_->sleep.asleep()) {

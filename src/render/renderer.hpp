@@ -71,6 +71,12 @@ class Renderer {
   // displaced (as a moving sphere's), waking sleeping water. Throws
   // std::out_of_range for a bad index.
   void moveSphere(size_t index, glm::vec3 center);
+  // New wave speed, damping, boundary or max slope from the next frame on:
+  // the water goes on from its state (waking if asleep), the substeps follow
+  // the wave speed. Any other field of `water` must be the scene's (throws
+  // std::invalid_argument: those need a new renderer). Going back to an
+  // earlier frame restarts the water with the new parameters.
+  void setWaterDynamics(const scene::Water& water);
   // The water's state now, downloaded. Throws without water.
   sim::WaterState waterState() const;
 

@@ -18,7 +18,7 @@ sim::WaterParams waterParams(const scene::Water& w) {
 }
 
 void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water, const scene::Scene& scene,
-                      uint64_t first, uint64_t count) {
+                      double start, uint64_t count) {
   const double dt = waterStep(scene.water);
   bool moving = false;
   for (const auto& sphere : scene.spheres) moving |= !sphere.path.empty();
@@ -26,8 +26,8 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
     water.recordSteps(cmd, count, dt);
     return;
   }
-  for (uint64_t step = first; step < first + count; ++step) {
-    const float t0 = float(double(step) * dt), t1 = float(double(step + 1) * dt);
+  for (uint64_t step = 0; step < count; ++step) {
+    const float t0 = float(start + double(step) * dt), t1 = float(start + double(step + 1) * dt);
     for (const auto& sphere : scene.spheres) {
       if (sphere.path.empty()) continue;
       water.recordSphereMove(cmd, worldToGrid(scene.water, scene::sphereCenterAt(sphere, t0)),
@@ -40,7 +40,7 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
 sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
   sim::GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);
   const uint64_t steps = uint64_t(frame) * waterSubsteps(scene.water);
-  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterSteps(cmd, stepper, scene, 0, steps); },
+  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterSteps(cmd, stepper, scene, 0.0, steps); },
                      "water simulation");
   return stepper.download();
 }

@@ -12,11 +12,12 @@
 
 namespace tp::render {
 
-// Records steps [first, first + count) of the scene's water: each step of
-// dt, preceded, for every sphere with a path, by its displacement of the water
-// from where it was at the step's start to where it is at its end.
+// Records `count` steps of the scene's water from scene time `start`
+// (seconds): each step of dt, preceded, for every sphere with a path, by its
+// displacement of the water from where it was at the step's start to where
+// it is at its end.
 void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water, const scene::Scene& scene,
-                      uint64_t first, uint64_t count);
+                      double start, uint64_t count);
 
 // The scene's water after `frame` frames, simulated on the GPU exactly as the
 // renderer does it, downloaded (for export and the CPU reference).

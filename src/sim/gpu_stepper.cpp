@@ -100,6 +100,14 @@ void GpuStepper::reset(const WaterState& state) {
   tiles_.markAll(0);
 }
 
+void GpuStepper::setParams(const WaterParams& params) {
+  if (params.n != params_.n) throw std::logic_error("GpuStepper::setParams: another grid size");
+  validate(params);
+  params_ = params;
+  tiles_.setBoundary(params.boundary);
+  tiles_.markAll(uint32_t(stepIndex_));
+}
+
 void GpuStepper::beforeCompute(const vk::raii::CommandBuffer& cmd) {
   // Ping-pong: the next pass reads what the last wrote and overwrites what it
   // read. One global barrier from compute writes to compute reads and writes is

@@ -46,6 +46,9 @@ class GpuStepper {
 
   // Starts again from `state` (same grid size), as if newly made.
   void reset(const WaterState& state);
+  // New parameters (same grid size) from the next step on, the state kept.
+  // Every tile counts as changed: the step itself changed.
+  void setParams(const WaterParams& params);
   void step(uint64_t steps, double dt);
   void drop(glm::vec2 center, float radius, float amplitude);
   void moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel);

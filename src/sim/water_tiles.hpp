@@ -49,6 +49,8 @@ class WaterTiles {
   // Marks every tile changed at `step` (a new state), and counts the whole
   // grid as the last listing, so that an automatic choice starts full.
   void markAll(uint32_t step);
+  // The boundary the list's neighbourhoods follow (wrap reaches across edges).
+  void setBoundary(Boundary boundary) { boundary_ = boundary; }
 
   // Lists the tiles with a tile changed at `changedStep` in their 3x3
   // neighbourhood; `accumulate` adds them to the running total (off when the
