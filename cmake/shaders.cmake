@@ -57,9 +57,12 @@ function(tidepool_compile_shaders)
   endforeach()
 
   set(embedded ${CMAKE_BINARY_DIR}/generated/spirv_embedded.cpp)
+  # '|' for ';': a list does not survive a custom command's arguments whole.
+  string(REPLACE ";" "|" variants_arg "${TIDEPOOL_SHADER_VARIANTS}")
   add_custom_command(
     OUTPUT ${embedded}
     COMMAND ${CMAKE_COMMAND} -DSPIRV_DIR=${TIDEPOOL_SPIRV_DIR} -DOUT=${embedded}
+            -DVARIANTS=${variants_arg}
             -P ${CMAKE_SOURCE_DIR}/cmake/embed_spirv.cmake
     DEPENDS ${outputs} ${CMAKE_SOURCE_DIR}/cmake/embed_spirv.cmake
     COMMENT "Embedding SPIR-V"
