@@ -366,8 +366,24 @@ struct Renderer::Resources {
 
 Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
                    const RendererOptions& options)
-    : ctx_(ctx), scene_(scene), width_(width), height_(height),
+    : ctx_(ctx), scene_(scene), width_(width), height_(height), options_(options),
       res_(std::make_unique<Resources>(ctx, scene_, width, height, options)) {}
+
+Renderer::Renderer(const Renderer& previous)
+    : Renderer(previous.ctx_, previous.scene_, previous.width_, previous.height_, previous.options_) {
+  const Resources& from = *previous.res_;
+  if (!res_->water) return;
+  // A new start from the previous water: every tile counts as changed once.
+  res_->water->reset(previous.waterState());
+  res_->stepsDone = from.stepsDone;
+  res_->frameBase = from.frameBase;
+  res_->stepBase = from.stepBase;
+  res_->pendingDrops = from.pendingDrops;
+  res_->pendingMoves = from.pendingMoves;
+  res_->sleep = from.sleep;
+  res_->waterEnergy = from.waterEnergy;
+  res_->waterTop = from.waterTop;
+}
 
 Renderer::~Renderer() = default;
 

@@ -57,6 +57,12 @@ class Renderer {
  public:
   Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
            const RendererOptions& options = {});
+  // A renderer that goes on where `previous` is (shader hot reload: its
+  // pipelines are made from the code gpu::spirvModule now gives): the same
+  // size and options, the scene as it now stands, the water's state, clock,
+  // sleep and pending drops and sphere moves. The next frame draws what
+  // `previous` would have drawn, given the same shader code.
+  explicit Renderer(const Renderer& previous);
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
   // A drop into the water before the next frame's simulation (it wakes sleeping water).
@@ -85,6 +91,7 @@ class Renderer {
   const gpu::Context& ctx_;
   scene::Scene scene_;
   uint32_t width_, height_;
+  RendererOptions options_;
   std::unique_ptr<Resources> res_;
 };
 
