@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <map>
 
+#include "app/camera_controller.hpp"
+#include "app/view_session.hpp"
+#include "app/water_pick.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
@@ -103,6 +106,130 @@ TEST_F(ViewTest, ScriptedDropAndResizeShowTheRenderersFrameWithNoValidationMessa
   EXPECT_GT(changed, size_t(kWidth) * kHeight / 100);
 }
 
+// A frame pixel for --script, on a pixel's centre: "X,Y".
+std::string pixelArg(glm::dvec2 pixel) { return std::to_string(pixel.x) + "," + std::to_string(pixel.y); }
+glm::dvec2 pixelCentre(glm::dvec2 p) { return glm::floor(p) + 0.5; }
+
+// The issue's interaction, scripted: orbit, zoom and fly the camera, pause
+// for ten frames shown, step once, drag the sphere and drop into the water
+// by pixel, run again, save the frame with the save key's command. The
+// saved EXR and the PNG screenshot are the frame an in-process renderer
+// makes with the same calls: setCamera with the controller's camera,
+// moveSphere to where the drag's ray meets the sphere's plane, addDrop where
+// the drop's ray meets the water, and the same frame numbers (tolerance 0:
+// the same renderer and device, deterministic by design).
+TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
+  const scene::Scene scene = scene::defaultScene();
+  constexpr double kOrbitX = 60.0, kOrbitY = -20.0, kZoom = 2.0;
+  const glm::dvec3 kFly(1.0, 0.5, 0.25);  // forward, right, seconds
+  app::CameraController camera(scene.camera);
+  auto orbit = [&] { camera.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel, kOrbitY * app::CameraControls::kOrbitRadiansPerPixel); };
+  orbit();
+  camera.zoom(kZoom);
+  camera.fly(kFly.x, kFly.y, kFly.z);
+  const scene::Camera moved = camera.camera();
+  // The pixels: the sphere's centre (its ray passes through the centre, so
+  // the grab's anchor on the plane at the centre's height is the centre),
+  // a point 0.6 m along -x and 0.5 m along +z of it, and a point on the water.
+  const scene::Sphere& sphere = scene.spheres.at(0);
+  const glm::dvec2 grab = pixelCentre(app::worldToPixel(moved, kWidth, kHeight, glm::dvec3(sphere.center)));
+  const glm::dvec2 drag =
+      pixelCentre(app::worldToPixel(moved, kWidth, kHeight, glm::dvec3(sphere.center) + glm::dvec3(-0.6, 0.0, 0.5)));
+  const glm::dvec2 drop = pixelCentre(app::worldToPixel(moved, kWidth, kHeight, {-0.7, double(scene.water.level), 0.9}));
+
+  ScratchDir dir;
+  const std::string shot = dir.file("shot.png");
+  const ProcessResult r = runViewer(
+      "--size 160x90 --frames 40 --save-dir " + dir.file("") + " --screenshot " + shot +
+          " --script 2:orbit:" + std::to_string(kOrbitX) + "," + std::to_string(kOrbitY) +
+          " --script 3:zoom:" + std::to_string(kZoom) + " --script 4:fly:1,0.5,0.25 --script 10:pause --script 20:step"
+          " --script 22:grab:" + pixelArg(grab) + " --script 22:drag:" + pixelArg(drag) + " --script 23:release"
+          " --script 25:drop:" + pixelArg(drop) + " --script 30:pause --script 39:save",
+      dir);
+  ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
+  // Frames shown 0-9 are 0-9; paused at 10 for shown 10-19; the step makes
+  // it 11 for 20-29; running again, shown 30-39 are 11-20.
+  EXPECT_NE(r.out.find("view: 40 frames at 160x90"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("last frame number 20\n"), std::string::npos) << r.out;
+  const std::string saved = dir.file("view-0020.exr");
+  EXPECT_NE(r.out.find("saved " + saved + " (frame 20)"), std::string::npos) << r.out;
+  ASSERT_TRUE(std::filesystem::exists(saved)) << r.out;
+
+  // The same calls in process, frame by frame as the viewer renders them.
+  render::Renderer renderer(ctx(), scene, kWidth, kHeight);
+  app::CameraController same(scene.camera);
+  auto renderFrame = [&](uint32_t frame, bool hdr = false) { return renderer.render({.frame = frame, .hdr = hdr, .ldr = true}); };
+  renderFrame(0);
+  renderFrame(1);
+  same.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel, kOrbitY * app::CameraControls::kOrbitRadiansPerPixel);
+  renderer.setCamera(same.camera());
+  renderFrame(2);
+  same.zoom(kZoom);
+  renderer.setCamera(same.camera());
+  renderFrame(3);
+  same.fly(kFly.x, kFly.y, kFly.z);
+  renderer.setCamera(same.camera());
+  for (uint32_t f = 4; f <= 11; ++f) renderFrame(f);  // 10 held, 11 stepped to
+  ASSERT_EQ(same.camera(), moved);
+  // The drag, paused at 11.
+  const float time = 11.0f * scene.water.frameTime;
+  const glm::vec3 centre = scene::sceneAt(renderer.scene(), time).spheres.at(0).center;
+  const auto anchor = app::rayPlaneY(app::pixelRay(moved, kWidth, kHeight, grab), centre.y, moved.farPlane);
+  const auto to = app::rayPlaneY(app::pixelRay(moved, kWidth, kHeight, drag), centre.y, moved.farPlane);
+  ASSERT_TRUE(anchor && to);
+  ASSERT_TRUE(app::pickSphere(app::pixelRay(moved, kWidth, kHeight, grab), renderer.scene().spheres));
+  const glm::dvec3 dragged = glm::dvec3(centre) + (*to - *anchor);
+  renderer.moveSphere(0, glm::vec3(float(dragged.x), centre.y, float(dragged.z)));
+  // The grab was on the centre's pixel: the sphere went where the drag pixel's ray meets its plane.
+  EXPECT_NEAR(dragged.x, sphere.center.x - 0.6, 0.05);
+  EXPECT_NEAR(dragged.z, sphere.center.z + 0.5, 0.05);
+  renderFrame(11);
+  // The drop, on the water as it stands.
+  const sim::WaterState water = renderer.waterState();
+  const auto hit = app::pickWater(app::pixelRay(moved, kWidth, kHeight, drop), scene.water, &water);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->x, -0.7, 0.05);
+  EXPECT_NEAR(hit->z, 0.9, 0.05);
+  renderer.addDrop({float(hit->x), float(hit->z), app::kClickDropRadius, app::kClickDropAmplitude});
+  for (uint32_t f = 11; f < 20; ++f) renderFrame(f);
+  const render::RenderedFrame last = renderFrame(20, true);
+
+  const std::vector<uint8_t> shown = pngBytes(shot);
+  expectAPicture(shown);
+  EXPECT_EQ(differingPixels(shown, last.srgb), 0u);
+  const io::FloatImage savedImage = io::readImage(saved);
+  EXPECT_EQ(savedImage.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
+  EXPECT_EQ(savedImage.pixels, last.rgba);
+  // The interaction shows: without the drag and the drop, frame 20 from
+  // this camera differs.
+  render::Renderer still(ctx(), scene, kWidth, kHeight);
+  still.setCamera(moved);
+  EXPECT_GT(differingPixels(shown, still.render({.frame = 20, .hdr = false, .ldr = true}).srgb), size_t(kWidth) * kHeight / 100);
+}
+
+// Paused, the frame number holds while the camera still moves: ten frames
+// shown after a pause before frame 5, with an orbit among them, show frame 5
+// from the orbited camera, not frame 15.
+TEST_F(ViewTest, PauseHoldsTheFrameNumberWhileTheCameraMoves) {
+  const scene::Scene scene = scene::defaultScene();
+  ScratchDir dir;
+  const std::string shot = dir.file("shot.png");
+  const ProcessResult r =
+      runViewer("--size 160x90 --frames 16 --script 5:pause --script 10:orbit:80,0 --screenshot " + shot, dir);
+  ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
+  EXPECT_NE(r.out.find("last frame number 5\n"), std::string::npos) << r.out;
+  const std::vector<uint8_t> shown = pngBytes(shot);
+  app::CameraController camera(scene.camera);
+  camera.orbit(-80.0 * app::CameraControls::kOrbitRadiansPerPixel, 0.0);
+  render::Renderer renderer(ctx(), scene, kWidth, kHeight);
+  for (uint32_t f = 0; f <= 5; ++f) renderer.render({.frame = f, .hdr = false, .ldr = true});
+  renderer.setCamera(camera.camera());
+  EXPECT_EQ(differingPixels(shown, renderer.render({.frame = 5, .hdr = false, .ldr = true}).srgb), 0u);
+  EXPECT_GT(differingPixels(shown, renderer.render({.frame = 15, .hdr = false, .ldr = true}).srgb), 0u);
+  render::Renderer unmoved(ctx(), scene, kWidth, kHeight);
+  EXPECT_GT(differingPixels(shown, unmoved.render({.frame = 5, .hdr = false, .ldr = true}).srgb), size_t(kWidth) * kHeight / 100);
+}
+
 // Without a drop, the screenshot is `tidepool render`'s PNG of the same
 // scene, frame and size, byte for byte after decoding (tolerance 0, as above),
 // after a resize to twice the size (the same aspect: no bars).
@@ -173,6 +300,23 @@ TEST(View, RefusesBadInputBeforeOpeningAWindow) {
       {"--script-drop 5:0,0,0.2,0.01 --scene " + dir.file("dry.json"), "needs a scene with water"},
       {"--script-resize 5:0x10", "--script-resize 5:0x10: expected FRAME:WxH"},
       {"--script-resize 10", "--script-resize 10: expected"},
+      {"--script 5", "--script 5: expected FRAME:ACTION[:ARGS]"},
+      {"--script x:pause", "--script x:pause: expected FRAME:ACTION[:ARGS]"},
+      {"--script 5:spin", "--script 5:spin: unknown action \"spin\""},
+      {"--script 5:orbit:1", "--script 5:orbit:1: expected FRAME:orbit:DX,DY"},
+      {"--script 5:orbit:1,nan", "--script 5:orbit:1,nan: expected FRAME:orbit:DX,DY"},
+      {"--script 5:zoom:far", "--script 5:zoom:far: expected FRAME:zoom:NOTCHES"},
+      {"--script 5:fly:2,0,1", "FORWARD and RIGHT must lie in -1..1"},
+      {"--script 5:fly:1,0,0", "SECONDS in (0, 10]"},
+      {"--script 5:pause:1", "--script 5:pause:1: expected FRAME:pause (no arguments)"},
+      {"--size 160x90 --script 5:drop:200,10", "--script 5:drop:200,10: the pixel is outside the 160x90 frame"},
+      {"--script 5:drag:10,10", "--script 5:drag:10,10: no grab comes before it"},
+      {"--script 5:grab:1,1 --script 4:drag:2,2", "--script 4:drag:2,2: no grab comes before it"},
+      {"--script 5:grab:1,1 --script 6:release --script 7:release", "--script 7:release: no grab comes before it"},
+      {"--script 60:save --frames 60", "--script at frame 60 is past the last frame"},
+      {"--script 5:drop:10,10 --scene " + dir.file("dry.json"), "--script drop needs a scene with water"},
+      {"--save-dir " + dir.file("missing"), "does not exist"},
+      {"--save-dir " + dir.file("dry.json"), "does not exist"},
   };
   for (const auto& [args, expected] : cases) {
     const std::string line = expectCleanFailure("view " + args, dir, files, noDisplay);
