@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "process.hpp"
+#include "sim_support.hpp"
 #include "render/objects_model.hpp"
 #include "scene/scene_file.hpp"
 #include "render/pool_model.hpp"
@@ -148,19 +149,11 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   }
 
   // Volume the sphere occupies below the rest level, column by column.
-  const double h = s.water.extent / n, half = 0.5 * s.water.extent;
-  double submerged = 0.0, waterChange = 0.0;
+  const double h = s.water.extent / n;
+  const double submerged = submergedVolume(n, s.water.extent, s.water.level, center, s.spheres[0].radius);
+  double waterChange = 0.0;
   for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) {
-      const double x = (i + 0.5) * h - half, z = (j + 0.5) * h - half;
-      const double r2 = double(s.spheres[0].radius) * s.spheres[0].radius - (x - center.x) * (x - center.x) -
-                        (z - center.z) * (z - center.z);
-      if (r2 > 0.0) {
-        const double chordHalf = std::sqrt(r2);
-        submerged += std::max(0.0, std::min(double(center.y) + chordHalf, double(s.water.level)) - (center.y - chordHalf)) * h * h;
-      }
-      waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
-    }
+    for (uint32_t i = 0; i < n; ++i) waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
   EXPECT_NEAR(waterChange, -submerged, 1e-3 * submerged);

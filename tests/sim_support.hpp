@@ -2,6 +2,7 @@
 // Shared helpers of the simulation tests.
 #include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <random>
 
 #include "sim/water_state.hpp"
@@ -27,6 +28,24 @@ inline double volumeOf(const sim::WaterState& s, double h) {
   double sum = 0.0;
   for (float u : s.u) sum += u;
   return sum * h * h;
+}
+
+// The volume a sphere occupies below the rest level `level`, summed column by
+// column over the cell centres of an n x n grid of side `extent` centred on
+// the origin: what the sphere displacement moves out of the water.
+inline double submergedVolume(uint32_t n, double extent, double level, glm::dvec3 center, double radius) {
+  const double h = extent / n, half = 0.5 * extent;
+  double volume = 0.0;
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      const double x = (i + 0.5) * h - half, z = (j + 0.5) * h - half;
+      const double r2 = radius * radius - (x - center.x) * (x - center.x) - (z - center.z) * (z - center.z);
+      if (r2 <= 0.0) continue;
+      const double chordHalf = std::sqrt(r2);
+      volume += std::max(0.0, std::min(center.y + chordHalf, level) - (center.y - chordHalf)) * h * h;
+    }
+  }
+  return volume;
 }
 
 }  // namespace tp::test

@@ -389,7 +389,7 @@ CameraMediumPass::CameraMediumPass(const gpu::Context& ctx)
     : pipeline(gpu::createComputePipeline(ctx, "camera_medium.comp", sizeof(shader::WaterSurfaceParams))) {}
 
 void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms,
-                               ResourceRef uniformsRef, const MediumDraw& medium) const {
+                               ResourceRef uniformsRef, const MediumDraw& medium, std::function<bool()> runIf) const {
   std::vector<std::pair<ResourceRef, Use>> uses{{medium.ref, Use::ComputeWrite}, {uniformsRef, Use::HostData}};
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::ComputeRead});
   graph.pass("camera medium", std::move(uses), [this, water, &frameUniforms, medium](PassContext& pc) {
@@ -400,7 +400,7 @@ void CameraMediumPass::declare(FrameGraph& graph, const WaterDraw& water, const 
         .storageBuffer(2, water.state())
         .bind(pc.cmd, pipeline, pc.descriptors);
     gpu::dispatch(pc.cmd, 1);
-  }, {.cached = true, .runIf = {}});
+  }, {.cached = true, .runIf = std::move(runIf)});
 }
 
 void declareImageCopy(FrameGraph& graph, const std::string& name, ResourceRef fromRef, const gpu::Image& from,

@@ -150,8 +150,9 @@ struct CausticsPass {
 // water or the frame uniforms (the camera) changed.
 struct CameraMediumPass {
   explicit CameraMediumPass(const gpu::Context& ctx);
+  // `runIf`: whether the medium may differ from what the buffer holds.
   void declare(FrameGraph& graph, const WaterDraw& water, const gpu::Buffer& frameUniforms, ResourceRef uniformsRef,
-               const MediumDraw& medium) const;
+               const MediumDraw& medium, std::function<bool()> runIf) const;
   gpu::Pipeline pipeline;
 };
 

@@ -21,13 +21,18 @@
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
 
+#include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace tp::render {
 
 struct Renderer::Resources {
+  // `scene` is the renderer's own, which setCamera() and moveSphere() change
+  // between frames: the passes that read those parts read it when recorded.
   Resources(const gpu::Context& ctx, const scene::Scene& scene, uint32_t w, uint32_t h, const RendererOptions& options)
-      : skipping(options.skipping),
+      : live(scene),
+        skipping(options.skipping),
         gbuffer(scene.ao.enabled || !options.skipping),
         skyPass(ctx),
         backgroundPass(ctx),
@@ -119,33 +124,33 @@ struct Renderer::Resources {
       // water is healthy and whether it may sleep; left out while it sleeps.
       graph.pass("simulate",
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
-                 [this, scene](PassContext& pc) {
+                 [this](PassContext& pc) {
                    for (const scene::Drop& d : pendingDrops) {
-                     const glm::vec3 centre = worldToGrid(scene.water, {d.x, 0.0f, d.z});
+                     const glm::vec3 centre = worldToGrid(live.water, {d.x, 0.0f, d.z});
                      water->recordDrop(pc.cmd, {centre.x, centre.z}, d.radius, d.amplitude);
                    }
-                   recordWaterSteps(pc.cmd, *water, scene, stepsDone, pendingSteps);
-                   water->recordStats(pc.cmd, waterStep(scene.water));
+                   for (const SphereMove& m : pendingMoves) {
+                     water->recordSphereMove(pc.cmd, worldToGrid(live.water, m.from), worldToGrid(live.water, m.to),
+                                             m.radius, live.water.level);
+                   }
+                   recordWaterSteps(pc.cmd, *water, live, stepsDone, pendingSteps);
+                   water->recordStats(pc.cmd, waterStep(live.water));
                  },
                  {.cached = false, .runIf = [this] { return simulating; }});
     }
-    // The medium around the camera: decided after the simulation where the
-    // camera is over the water, air (zeros, uploaded once) where it cannot be
-    // under it.
-    const bool mediumPass = water && (cameraOverWater(scene) || !skipping);
-    if (mediumPass) {
-      medium = gpu::createBuffer(ctx, sizeof(shader::CameraMedium),
-                                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformBuffer,
-                                 gpu::MemoryUse::Device, "camera medium");
-    } else {
-      const shader::CameraMedium air{glm::vec4(0.0f)};
-      medium = gpu::createFilledBuffer(ctx, &air, sizeof(air), vk::BufferUsageFlagBits::eUniformBuffer,
-                                       gpu::MemoryUse::Upload, "camera medium");
-    }
+    // The medium around the camera: air (zeros, uploaded first) while the
+    // camera is away from the water's square, where it cannot be under the
+    // surface; decided after the simulation while it is over it, and once
+    // more when it leaves (setCamera), to write air again.
+    const shader::CameraMedium air{glm::vec4(0.0f)};
+    medium = gpu::createFilledBuffer(ctx, &air, sizeof(air),
+                                     vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformBuffer,
+                                     gpu::MemoryUse::Device, "camera medium");
     const MediumDraw mediumDraw{graph.buffer("camera medium", medium), &medium};
-    if (mediumPass) {
+    if (water) {
       cameraMediumPass.emplace(ctx);
-      cameraMediumPass->declare(graph, *waterDraw, uniforms, uniformsRef, mediumDraw);
+      cameraMediumPass->declare(graph, *waterDraw, uniforms, uniformsRef, mediumDraw,
+                                [this] { return !skipping || cameraOverWater(live) || mediumMayNotBeAir; });
     }
     std::optional<PoolDraw> poolDraw;
     if (hasPool(scene)) {
@@ -292,6 +297,7 @@ struct Renderer::Resources {
                     viewNormalReadback);
   }
 
+  const scene::Scene& live;  // the renderer's scene (see the constructor)
   bool skipping;  // RendererOptions::skipping
   bool gbuffer;   // the surfaces draw the G-buffer: AO reads it (or nothing is skipped)
   SkyPass skyPass;
@@ -336,6 +342,12 @@ struct Renderer::Resources {
   uint64_t pendingSteps = 0;
   std::vector<ResourceRef> waterStateRefs;
   std::vector<scene::Drop> pendingDrops;  // addDrop()'s, for the next frame
+  struct SphereMove {
+    glm::vec3 from, to;
+    float radius;
+  };
+  std::vector<SphereMove> pendingMoves;   // moveSphere()'s, for the next frame
+  bool mediumMayNotBeAir = false;         // the camera medium pass last ran with the camera over the water
   bool simulating = false;                 // this frame records the simulation
   WaterSleep sleep;
   double waterEnergy = 0.0;
@@ -347,7 +359,7 @@ struct Renderer::Resources {
 Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
                    const RendererOptions& options)
     : ctx_(ctx), scene_(scene), width_(width), height_(height),
-      res_(std::make_unique<Resources>(ctx, scene, width, height, options)) {}
+      res_(std::make_unique<Resources>(ctx, scene_, width, height, options)) {}
 
 Renderer::~Renderer() = default;
 
@@ -366,6 +378,33 @@ bool bodyMoves(const scene::Scene& scene, double t0, double t1) {
 void Renderer::addDrop(const scene::Drop& drop) {
   if (!res_->water) throw std::runtime_error("a drop needs a scene with water");
   res_->pendingDrops.push_back(drop);
+}
+
+void Renderer::setCamera(const scene::Camera& camera) {
+  scene::validateCamera(camera);
+  scene_.camera = camera;
+}
+
+void Renderer::moveSphere(size_t index, glm::vec3 center) {
+  if (index >= scene_.spheres.size()) {
+    throw std::out_of_range("sphere " + std::to_string(index) + " of a scene with " +
+                            std::to_string(scene_.spheres.size()));
+  }
+  if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z)) {
+    throw std::runtime_error("a sphere's centre must be finite");
+  }
+  scene::Sphere& sphere = scene_.spheres[index];
+  // Where it is now: on its path, at the time the water has reached.
+  const float now = res_->water ? float(double(res_->stepsDone) * waterStep(scene_.water)) : 0.0f;
+  const glm::vec3 from = scene::sphereCenterAt(sphere, now);
+  sphere.path.clear();
+  sphere.center = center;
+  if (res_->water && from != center) res_->pendingMoves.push_back({from, center, sphere.radius});
+}
+
+sim::WaterState Renderer::waterState() const {
+  if (!res_->water) throw std::runtime_error("the scene has no water");
+  return res_->water->download();
 }
 
 RenderedFrame Renderer::render(const FrameRequest& request) {
@@ -394,7 +433,8 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
       res_->stepsDone = 0;
       res_->restartWater(scene_, res_->water->stats(dt));
     }
-    if (!res_->pendingDrops.empty() || bodyMoves(scene_, double(res_->stepsDone) * dt, double(target) * dt)) {
+    const bool disturbed = !res_->pendingDrops.empty() || !res_->pendingMoves.empty();
+    if (disturbed || bodyMoves(scene_, double(res_->stepsDone) * dt, double(target) * dt)) {
       res_->sleep.wake();
     }
     if (res_->skipping && res_->sleep.asleep()) {
@@ -402,7 +442,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
       res_->pendingSteps = 0;
     } else {
       res_->pendingSteps = target - res_->stepsDone;
-      res_->simulating = res_->pendingSteps > 0 || !res_->pendingDrops.empty();
+      res_->simulating = res_->pendingSteps > 0 || disturbed;
     }
   }
   // Spheres with a path are where the path puts them at this frame's time;
@@ -460,12 +500,16 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     res_->stepsDone += res_->pendingSteps;
     res_->pendingSteps = 0;
     res_->pendingDrops.clear();
+    res_->pendingMoves.clear();
     const sim::WaterStats stats = res_->water->readStats();
     sim::checkHealth(stats, res_->stepsDone, std::numeric_limits<double>::infinity());
     const double area = double(scene_.water.extent) * scene_.water.extent;
     res_->waterEnergy = stats.energy / area;
     res_->sleep.observe(res_->waterEnergy);
     res_->waterTop = Resources::highestWater(scene_, stats);
+  }
+  if (std::any_of(out.passes.begin(), out.passes.end(), [](const RecordedPass& p) { return p.name == "camera medium"; })) {
+    res_->mediumMayNotBeAir = cameraOverWater(scene_);
   }
   out.waterAsleep = res_->water && !simulated;
   out.waterEnergy = res_->waterEnergy;

@@ -7,6 +7,7 @@
 #include "gpu/context.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene.hpp"
+#include "sim/water_state.hpp"
 
 namespace tp::render {
 
@@ -60,6 +61,18 @@ class Renderer {
   RenderedFrame render(const FrameRequest& request);
   // A drop into the water before the next frame's simulation (it wakes sleeping water).
   void addDrop(const scene::Drop& drop);
+
+  // The live part of the scene, for the viewer. The scene as it now stands.
+  const scene::Scene& scene() const { return scene_; }
+  // Takes effect at the next render(); throws on an impossible camera.
+  void setCamera(const scene::Camera& camera);
+  // Moves sphere `index` to `center` before the next frame's simulation: its
+  // path is dropped, it stays there, and the water it pushes in or out is
+  // displaced (as a moving sphere's), waking sleeping water. Throws
+  // std::out_of_range for a bad index.
+  void moveSphere(size_t index, glm::vec3 center);
+  // The water's state now, downloaded. Throws without water.
+  sim::WaterState waterState() const;
 
  private:
   struct Resources;
