@@ -127,28 +127,18 @@ ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_
       }
       return command::Fly{v[0], v[1], v[2]};
     }
-    if (action == "reset") {
-      values(0, "reset");
-      return command::ResetCamera{};
-    }
     if (action == "drop") return command::Drop{pixel("drop:X,Y (frame pixels)")};
     if (action == "grab") return command::Grab{pixel("grab:X,Y (frame pixels)")};
     if (action == "drag") return command::Drag{pixel("drag:X,Y (frame pixels)")};
-    if (action == "release") {
-      values(0, "release");
-      return command::Release{};
-    }
-    if (action == "pause") {
-      values(0, "pause");
-      return command::TogglePause{};
-    }
-    if (action == "step") {
-      values(0, "step");
-      return command::Step{};
-    }
-    if (action == "save") {
-      values(0, "save");
-      return command::Save{};
+    const std::pair<const char*, ViewCommand> bare[] = {{"reset", command::ResetCamera{}},
+                                                        {"release", command::Release{}},
+                                                        {"pause", command::TogglePause{}},
+                                                        {"step", command::Step{}},
+                                                        {"save", command::Save{}}};
+    for (const auto& [name, c] : bare) {
+      if (action != name) continue;
+      values(0, name);
+      return c;
     }
     throw fail("unknown action \"" + std::string(action) + "\"; expected " + kScriptForm);
   };
@@ -182,8 +172,8 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       "  R                          reset the camera to the scene's\n"
       "  Space                      pause / run the simulation (the frame number holds; the camera still moves)\n"
       "  N or .                     step one frame (pauses)\n"
-      "  P or F12                   save the frame as view-NNNN.exr (float linear RGBA, camera attributes) in\n"
-      "                             --save-dir; NNNN the frame number; prints the path\n"
+      "  P or F12                   save the next frame rendered (paused: the frame shown) as view-NNNN.exr, float\n"
+      "                             linear RGBA with the camera attributes, in --save-dir; NNNN: its frame number\n"
       "  Escape                     quit");
   addSceneOptions(cmd, o.scene);
   cmd->add_option("--size", o.size,
@@ -191,7 +181,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
                   "window, its aspect kept")
       ->type_name("WxH")
       ->capture_default_str();
-  auto* frames = cmd->add_option("--frames", o.frames, "Show N frames (0 to N-1) with no input, then exit")
+  auto* frames = cmd->add_option("--frames", o.frames, "Show N frames, then exit: frame numbers 0 to N-1 unless paused (the mouse and keys still work)")
                      ->type_name("N")
                      ->check(CLI::Range(1u, 1000000u));
   cmd->add_option("--screenshot", o.screenshot,
@@ -200,13 +190,13 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       ->type_name("PATH")
       ->needs(frames);
   cmd->add_option("--script-drop", o.scriptDrops,
-                  "Testing aid: drop into the water just before frame FRAME is rendered (FRAME:X,Z,RADIUS,AMP in "
-                  "metres, as a scene's water.drops; repeatable)")
+                  "Testing aid: drop into the water just before the FRAME-th frame shown (counted from 0) "
+                  "(FRAME:X,Z,RADIUS,AMP in metres, as a scene's water.drops; repeatable)")
       ->type_name("SPEC")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--script-resize", o.scriptResize,
-                  "Testing aid: ask the window system for a WxH window just before frame FRAME is rendered "
+                  "Testing aid: ask the window system for a WxH window just before the FRAME-th frame shown "
                   "(FRAME:WxH); the frame's size stays --size")
       ->type_name("SPEC");
   cmd->add_option("--save-dir", o.saveDir,

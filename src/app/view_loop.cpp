@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "app/frame_presenter.hpp"
 #include "app/gpu_session.hpp"
@@ -109,11 +110,28 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
   ViewStats stats;
   const Clock::time_point start = Clock::now();
   Clock::time_point titled = start, previous = start;
-  for (uint32_t shown = 0; !config.frames || shown < *config.frames; ++shown) {
-    // Paused on an unchanged frame, a viewer run by hand sleeps until input
-    // comes (or a moment passes: the fly keys are read, not sent).
-    const bool idle = !config.frames && session.paused() && !session.needsRender();
-    if (idle) window.waitEventsTimeout(1.0 / 30.0);
+  std::string title;
+  auto retitle = [&](bool now) {
+    char text[128];
+    if (session.paused()) {
+      std::snprintf(text, sizeof text, "tidepool view - frame %u (paused)", stats.lastFrame);
+    } else {
+      std::snprintf(text, sizeof text, "tidepool view - frame %u - %.1f fps", stats.lastFrame,
+                    stats.framesShown / secondsSince(start));
+    }
+    if (text != title && (now || secondsSince(titled) > 0.5)) {
+      title = text;
+      titled = Clock::now();
+      window.setTitle(title);
+    }
+  };
+  uint32_t shown = 0;  // frames shown so far: the script's clock
+  while (!config.frames || shown < *config.frames) {
+    // Paused on a frame already shown, a viewer run by hand has nothing new
+    // to show: it sleeps until input comes, or a moment passes (the fly keys
+    // are read, not sent).
+    const bool waiting = !config.frames && session.paused() && !session.needsRender();
+    if (waiting) window.waitEventsTimeout(0.1);
     else window.pollEvents();
     // Minimised: nothing is rendered, the loop sleeps in the window system.
     if (window.shouldClose() || waitForArea(window).width == 0) break;
@@ -124,6 +142,10 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
       apply(*fly);
     }
     previous = now;
+    if (waiting && !session.needsRender() && !window.takeRefresh()) {
+      retitle(true);
+      continue;
+    }
     if (config.resize && config.resize->frame == shown) window.resize(config.resize->width, config.resize->height);
     bool dropped = false;
     for (const ScriptedDrop& d : config.drops) {
@@ -148,14 +170,9 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     const bool presented = display.show(last.srgb, stats);
     stats.showSeconds += secondsSince(showStart);
     if (!presented) break;
+    ++shown;
     ++stats.framesShown;
-    if (secondsSince(titled) > 0.5 || idle) {
-      titled = Clock::now();
-      char title[128];
-      std::snprintf(title, sizeof title, "tidepool view - frame %u%s - %.1f fps", stats.lastFrame,
-                    session.paused() ? " (paused)" : "", stats.framesShown / secondsSince(start));
-      window.setTitle(title);
-    }
+    retitle(false);
   }
   stats.seconds = secondsSince(start);
   stats.window = display.extent();

@@ -51,10 +51,12 @@ bool ViewSession::apply(const ViewCommand& command) {
           const auto hit = pickWater(rayThrough(c.pixel), scene.water, &water);
           if (!hit) return false;
           renderer_.addDrop(scene::Drop{float(hit->x), float(hit->z), kClickDropRadius, kClickDropAmplitude});
+          std::printf("drop at x %.3f, z %.3f\n", hit->x, hit->z);
           changed_ = true;
         } else if constexpr (std::is_same_v<C, command::Grab>) {
-          // The spheres where this frame shows them (a path moves them in time).
-          const scene::Scene placed = scene::sceneAt(scene, float(frame_) * scene.water.frameTime);
+          // The spheres where the frame on screen shows them (a path moves them in time).
+          const float time = float(lastRendered_.value_or(frame_)) * scene.water.frameTime;
+          const scene::Scene placed = scene::sceneAt(scene, time);
           const Ray ray = rayThrough(c.pixel);
           const auto picked = pickSphere(ray, placed.spheres);
           grabbed_.reset();
@@ -62,15 +64,20 @@ bool ViewSession::apply(const ViewCommand& command) {
           const glm::vec3 center = placed.spheres[picked->index].center;
           const auto anchor = rayPlaneY(ray, center.y, scene.camera.farPlane);
           if (!anchor) return false;
-          grabbed_ = Grabbed{picked->index, center, *anchor};
+          grabbed_ = Grabbed{picked->index, center, *anchor, center};
         } else if constexpr (std::is_same_v<C, command::Drag>) {
           if (!grabbed_) return false;
           const auto to = rayPlaneY(rayThrough(c.pixel), grabbed_->center.y, scene.camera.farPlane);
           if (!to) return false;
           const glm::dvec3 moved = glm::dvec3(grabbed_->center) + (*to - grabbed_->anchor);
-          renderer_.moveSphere(grabbed_->index, glm::vec3(float(moved.x), grabbed_->center.y, float(moved.z)));
+          grabbed_->now = glm::vec3(float(moved.x), grabbed_->center.y, float(moved.z));
+          renderer_.moveSphere(grabbed_->index, grabbed_->now);
           changed_ = true;
         } else if constexpr (std::is_same_v<C, command::Release>) {
+          if (grabbed_ && grabbed_->now != grabbed_->center) {
+            std::printf("moved sphere %zu to (%.3f, %.3f, %.3f)\n", grabbed_->index, grabbed_->now.x, grabbed_->now.y,
+                        grabbed_->now.z);
+          }
           grabbed_.reset();
         } else if constexpr (std::is_same_v<C, command::TogglePause>) {
           paused_ = !paused_;

@@ -77,6 +77,7 @@ class ViewSession {
     size_t index = 0;
     glm::vec3 center{0.0f};   // where the sphere was when grabbed
     glm::dvec3 anchor{0.0};   // the grab's ray on the horizontal plane through that centre
+    glm::vec3 now{0.0f};      // where the drag has put it
   };
   void setCamera();
   std::string savePath() const;

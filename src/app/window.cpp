@@ -46,7 +46,8 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
     failToOpen("GLFW could not create a " + std::to_string(width) + "x" + std::to_string(height) + " window");
   }
   glfwSetWindowUserPointer(window_, this);
-  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { self(w).resized_ = true; });
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { self(w).resized_ = self(w).refresh_ = true; });
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { self(w).refresh_ = true; });
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
     if (key == GLFW_KEY_ESCAPE) {
       if (action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
@@ -54,15 +55,22 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
       self(w).record({.kind = InputEvent::Kind::KeyDown, .code = key, .repeat = action == GLFW_REPEAT});
     }
   });
+  // A button event is where the last motion event left the cursor:
+  // glfwGetCursorPos asks the X server where it is now, past the events
+  // still queued.
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window_, &x, &y);
+  cursor_ = toFramebuffer(x, y);
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
     Window& window = self(w);
     window.record({.kind = action == GLFW_PRESS ? InputEvent::Kind::ButtonDown : InputEvent::Kind::ButtonUp,
                    .code = button,
-                   .position = window.cursor()});
+                   .position = window.cursor_});
   });
   glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
     Window& window = self(w);
-    window.record({.kind = InputEvent::Kind::CursorMove, .position = window.toFramebuffer(x, y)});
+    window.cursor_ = window.toFramebuffer(x, y);
+    window.record({.kind = InputEvent::Kind::CursorMove, .position = window.cursor_});
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double x, double y) {
     self(w).record({.kind = InputEvent::Kind::Scroll, .position = {x, y}});
@@ -116,6 +124,8 @@ bool Window::takeResized() {
   return resized;
 }
 
+bool Window::takeRefresh() { return std::exchange(refresh_, false); }
+
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void Window::waitEventsTimeout(double seconds) { glfwWaitEventsTimeout(seconds); }
@@ -134,12 +144,6 @@ glm::dvec2 Window::toFramebuffer(double x, double y) const {
   const vk::Extent2D framebuffer = framebufferSize();
   if (width <= 0 || height <= 0) return {x, y};
   return {x * framebuffer.width / width, y * framebuffer.height / height};
-}
-
-glm::dvec2 Window::cursor() const {
-  double x = 0.0, y = 0.0;
-  glfwGetCursorPos(window_, &x, &y);
-  return toFramebuffer(x, y);
 }
 
 }  // namespace tp::app

@@ -50,6 +50,9 @@ class Window {
   void resize(uint32_t width, uint32_t height);
   // Whether the framebuffer changed size since the last call.
   bool takeResized();
+  // Whether the window system asked for the content to be drawn again (it
+  // was exposed, or changed size) since the last call.
+  bool takeRefresh();
   void setTitle(const std::string& title);
   // Like waitEvents, for at most `seconds`.
   void waitEventsTimeout(double seconds);
@@ -63,11 +66,12 @@ class Window {
  private:
   void record(InputEvent event);
   glm::dvec2 toFramebuffer(double x, double y) const;
-  glm::dvec2 cursor() const;
 
   GLFWwindow* window_ = nullptr;
   bool resized_ = false;
+  bool refresh_ = false;
   std::vector<InputEvent> input_;
+  glm::dvec2 cursor_{0.0};  // framebuffer pixels, as the last motion event put it
 };
 
 }  // namespace tp::app
