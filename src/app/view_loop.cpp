@@ -127,10 +127,11 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
   };
   uint32_t shown = 0;  // frames shown so far: the script's clock
   while (!config.frames || shown < *config.frames) {
-    // Paused on a frame already shown, a viewer run by hand has nothing new
-    // to show: it sleeps until input comes, or a moment passes (the fly keys
-    // are read, not sent).
-    const bool waiting = !config.frames && session.paused() && !session.needsRender();
+    // Paused on a frame already shown, a viewer run by hand (no --frames, no
+    // script counting frames shown) has nothing new to show: it sleeps until
+    // input comes, or a moment passes (the fly keys are read, not sent).
+    const bool byHand = !config.frames && config.script.empty() && config.drops.empty() && !config.resize;
+    const bool waiting = byHand && session.paused() && !session.needsRender();
     if (waiting) window.waitEventsTimeout(0.1);
     else window.pollEvents();
     // Minimised: nothing is rendered, the loop sleeps in the window system.
