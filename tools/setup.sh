@@ -10,7 +10,7 @@ packages=(
   libglm-dev libopenimageio-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libembree-dev python3-matplotlib
-  xvfb xauth  # the viewer's tests open windows in Xvfb; xauth for xvfb-run
+  xvfb xauth xdotool  # the viewer's tests open windows in Xvfb (xauth for xvfb-run) and type and click in them
 )
 
 missing=()

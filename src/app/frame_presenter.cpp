@@ -26,16 +26,15 @@ constexpr gpu::Access kBlitDone{S::eBlit, A::eNone};
 
 constexpr uint64_t kTimeoutNs = 600ull * 1000 * 1000 * 1000;
 
-// Where the frame goes in the window: as large as fits, its aspect kept, centred.
-std::array<vk::Offset3D, 2> fitted(vk::Extent2D frame, vk::Extent2D window) {
+}  // namespace
+
+std::array<vk::Offset3D, 2> letterbox(vk::Extent2D frame, vk::Extent2D window) {
   const double scale = std::min(double(window.width) / frame.width, double(window.height) / frame.height);
   const int32_t w = std::clamp(int32_t(std::lround(frame.width * scale)), 1, int32_t(window.width));
   const int32_t h = std::clamp(int32_t(std::lround(frame.height * scale)), 1, int32_t(window.height));
   const int32_t x = (int32_t(window.width) - w) / 2, y = (int32_t(window.height) - h) / 2;
   return {vk::Offset3D{x, y, 0}, vk::Offset3D{x + w, y + h, 1}};
 }
-
-}  // namespace
 
 FramePresenter::FramePresenter(const gpu::Context& ctx, vk::Extent2D frameSize)
     : ctx_(ctx),
@@ -119,7 +118,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
 void FramePresenter::record(const Swapchain& swapchain, uint32_t index) {
   const vk::Image target = swapchain.image(index);
   const vk::Extent2D window = swapchain.extent();
-  const auto dst = fitted(frameSize_, window);
+  const auto dst = letterbox(frameSize_, window);
   const bool bars = dst[0].x > 0 || dst[0].y > 0 || dst[1].x < int32_t(window.width) || dst[1].y < int32_t(window.height);
   const auto color = vk::ImageAspectFlagBits::eColor;
   using L = vk::ImageLayout;

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -23,6 +24,10 @@ namespace tp::app {
 // reallocate every target at each step of a drag; with a fixed size a
 // resize costs only a new swapchain, and the frame shown is the frame
 // `tidepool render` writes at that size.
+// Where the frame goes in a window of the given size: as large as fits, its
+// aspect kept, centred; the corners of the blit's destination (z 0 and 1).
+std::array<vk::Offset3D, 2> letterbox(vk::Extent2D frame, vk::Extent2D window);
+
 class FramePresenter {
  public:
   FramePresenter(const gpu::Context& ctx, vk::Extent2D frameSize);

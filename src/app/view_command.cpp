@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 
@@ -66,6 +67,84 @@ ScriptedResize scriptedResize(const std::string& text) {
   return {*frame, wh->first, wh->second};
 }
 
+constexpr const char* kScriptForm =
+    "FRAME:ACTION[:ARGS] with ACTION one of orbit:DX,DY (window pixels dragged), zoom:NOTCHES, "
+    "fly:FORWARD,RIGHT,SECONDS (each of FORWARD, RIGHT in -1..1, SECONDS in (0, 10]), reset, drop:X,Y, grab:X,Y, "
+    "drag:X,Y (frame pixels), release, pause, step, save; e.g. 12:orbit:40,-10";
+
+// `count` finite numbers separated by commas, or nothing.
+std::optional<std::vector<double>> numberList(std::string_view text, size_t count) {
+  std::vector<double> values;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t comma = k + 1 < count ? text.find(',') : text.size();
+    if (comma == std::string_view::npos) return std::nullopt;
+    const auto value = number<double>(text.substr(0, comma));
+    if (!value || !std::isfinite(*value)) return std::nullopt;
+    values.push_back(*value);
+    text = text.substr(std::min(comma + 1, text.size()));
+  }
+  return values;
+}
+
+ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_t height) {
+  const std::string_view all(text);
+  const size_t colon = all.find(':');
+  const auto frame = number<uint32_t>(all.substr(0, colon));
+  if (colon == std::string_view::npos || !frame) throw badValue("--script", text, kScriptForm);
+  const std::string_view rest = all.substr(colon + 1);
+  const size_t argsAt = rest.find(':');
+  const std::string_view action = rest.substr(0, argsAt);
+  const std::optional<std::string_view> args =
+      argsAt == std::string_view::npos ? std::nullopt : std::optional(rest.substr(argsAt + 1));
+  auto fail = [&](const std::string& why) { return std::runtime_error("--script " + text + ": " + why); };
+  // The action's arguments: exactly `count` numbers (none: no ":ARGS").
+  auto values = [&](size_t count, const char* form) {
+    if (count == 0) {
+      if (args) throw fail(std::string("expected FRAME:") + form + " (no arguments)");
+      return std::vector<double>{};
+    }
+    const auto list = args ? numberList(*args, count) : std::nullopt;
+    if (!list) throw fail(std::string("expected FRAME:") + form);
+    return *list;
+  };
+  auto pixel = [&](const char* form) {
+    const std::vector<double> v = values(2, form);
+    if (v[0] < 0.0 || v[1] < 0.0 || v[0] > width || v[1] > height) {
+      throw fail("the pixel is outside the " + std::to_string(width) + "x" + std::to_string(height) + " frame");
+    }
+    return glm::dvec2(v[0], v[1]);
+  };
+  const auto make = [&]() -> ViewCommand {
+    if (action == "orbit") {
+      const auto v = values(2, "orbit:DX,DY (window pixels dragged)");
+      return command::Orbit{v[0], v[1]};
+    }
+    if (action == "zoom") return command::Zoom{values(1, "zoom:NOTCHES (wheel notches, positive closer)")[0]};
+    if (action == "fly") {
+      const auto v = values(3, "fly:FORWARD,RIGHT,SECONDS");
+      if (std::abs(v[0]) > 1.0 || std::abs(v[1]) > 1.0 || !(v[2] > 0.0 && v[2] <= 10.0)) {
+        throw fail("FORWARD and RIGHT must lie in -1..1 and SECONDS in (0, 10]");
+      }
+      return command::Fly{v[0], v[1], v[2]};
+    }
+    if (action == "drop") return command::Drop{pixel("drop:X,Y (frame pixels)")};
+    if (action == "grab") return command::Grab{pixel("grab:X,Y (frame pixels)")};
+    if (action == "drag") return command::Drag{pixel("drag:X,Y (frame pixels)")};
+    const std::pair<const char*, ViewCommand> bare[] = {{"reset", command::ResetCamera{}},
+                                                        {"release", command::Release{}},
+                                                        {"pause", command::TogglePause{}},
+                                                        {"step", command::Step{}},
+                                                        {"save", command::Save{}}};
+    for (const auto& [name, c] : bare) {
+      if (action != name) continue;
+      values(0, name);
+      return c;
+    }
+    throw fail("unknown action \"" + std::string(action) + "\"; expected " + kScriptForm);
+  };
+  return {*frame, make()};
+}
+
 void requireBeforeEnd(const char* option, uint32_t frame, uint32_t frames) {
   if (frames > 0 && frame >= frames) {
     throw std::runtime_error(std::string(option) + " at frame " + std::to_string(frame) + " is past the last frame (" +
@@ -79,15 +158,30 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "view",
       "Show the scene live in a window (GLFW, Vulkan swapchain), rendered by the renderer `render` uses: frame N is "
-      "the water after N frames. Escape or closing the window quits. Not yet: camera control, interaction, a "
-      "panel, shader reload (README, \"Viewer\")");
+      "the water after N frames. The mouse, wheel and keys move the camera, drop into the water, drag the sphere, "
+      "pause, step and save (below). Escape or closing the window quits. Not yet: the ImGui panel, shader and "
+      "scene hot reload, saving the scene (README, \"Viewer\")");
+  cmd->footer(
+      "Controls:\n"
+      "  left drag on a sphere      move it in the horizontal plane at its centre's height (it displaces the water)\n"
+      "  left click on the water    a drop where the pixel's ray meets the surface\n"
+      "  left drag elsewhere,\n"
+      "  right drag anywhere        orbit the camera about its target\n"
+      "  wheel                      zoom (the distance to the target)\n"
+      "  W A S D                    fly: forward, left, back, right, horizontally\n"
+      "  R                          reset the camera to the scene's\n"
+      "  Space                      pause / run the simulation (the frame number holds; the camera still moves)\n"
+      "  N or .                     step one frame (pauses)\n"
+      "  P or F12                   save the next frame rendered (paused: the frame shown) as view-NNNN.exr, float\n"
+      "                             linear RGBA with the camera attributes, in --save-dir; NNNN: its frame number\n"
+      "  Escape                     quit");
   addSceneOptions(cmd, o.scene);
   cmd->add_option("--size", o.size,
                   "Frame size WxH, and the window's first size; the frame keeps this size and is scaled to the "
                   "window, its aspect kept")
       ->type_name("WxH")
       ->capture_default_str();
-  auto* frames = cmd->add_option("--frames", o.frames, "Show N frames (0 to N-1) with no input, then exit")
+  auto* frames = cmd->add_option("--frames", o.frames, "Show N frames, then exit: frame numbers 0 to N-1 unless paused (the mouse and keys still work)")
                      ->type_name("N")
                      ->check(CLI::Range(1u, 1000000u));
   cmd->add_option("--screenshot", o.screenshot,
@@ -96,15 +190,28 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       ->type_name("PATH")
       ->needs(frames);
   cmd->add_option("--script-drop", o.scriptDrops,
-                  "Testing aid: drop into the water just before frame FRAME is rendered (FRAME:X,Z,RADIUS,AMP in "
-                  "metres, as a scene's water.drops; repeatable)")
+                  "Testing aid: drop into the water just before the FRAME-th frame shown (counted from 0) "
+                  "(FRAME:X,Z,RADIUS,AMP in metres, as a scene's water.drops; repeatable)")
       ->type_name("SPEC")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--script-resize", o.scriptResize,
-                  "Testing aid: ask the window system for a WxH window just before frame FRAME is rendered "
+                  "Testing aid: ask the window system for a WxH window just before the FRAME-th frame shown "
                   "(FRAME:WxH); the frame's size stays --size")
       ->type_name("SPEC");
+  cmd->add_option("--save-dir", o.saveDir,
+                  "Where the save key (P, F12) writes view-NNNN.exr (NNNN: the frame number; -2, -3, ... added "
+                  "rather than overwrite); default: the working directory")
+      ->type_name("DIR");
+  cmd->add_option("--script", o.script,
+                  "Testing aid: apply a command just before the FRAME-th frame shown (counted from 0; with a pause "
+                  "not the frame number), through the same handler as the mouse and keys: FRAME:ACTION[:ARGS] with "
+                  "ACTION orbit:DX,DY (window pixels dragged), zoom:NOTCHES, fly:FORWARD,RIGHT,SECONDS, reset, "
+                  "drop:X,Y, grab:X,Y, drag:X,Y (frame pixels from the top-left corner), release, pause (toggles), "
+                  "step, save; repeatable, applied by frame and in the order given")
+      ->type_name("SPEC")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -133,9 +240,33 @@ int runView(const ViewOptions& o) {
     config.resize = scriptedResize(o.scriptResize);
     requireBeforeEnd("--script-resize", config.resize->frame, o.frames);
   }
+  // The script in the order it applies: by frame, in the order given within one.
+  std::vector<std::pair<ScriptedCommand, const std::string*>> script;
+  for (const std::string& text : o.script) {
+    script.emplace_back(scriptedCommand(text, config.width, config.height), &text);
+    requireBeforeEnd("--script", script.back().first.frame, o.frames);
+  }
+  std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.first.frame < b.first.frame; });
+  bool grabbed = false, drops = false, saves = false;
+  for (const auto& [scripted, text] : script) {
+    const ViewCommand& c = scripted.command;
+    if ((std::holds_alternative<command::Drag>(c) || std::holds_alternative<command::Release>(c)) && !grabbed) {
+      throw std::runtime_error("--script " + *text + ": no grab comes before it");
+    }
+    grabbed = (grabbed || std::holds_alternative<command::Grab>(c)) && !std::holds_alternative<command::Release>(c);
+    drops |= std::holds_alternative<command::Drop>(c);
+    saves |= std::holds_alternative<command::Save>(c);
+    config.script.push_back(scripted);
+  }
+  if (!o.saveDir.empty() || saves) {
+    // What a save would write first: the directory must be there and writable.
+    io::checkWritable((std::filesystem::path(o.saveDir) / "view-0000.exr").string());
+    config.saveDir = o.saveDir;
+  }
   config.scene = loadScene(o.scene);
-  if (!config.drops.empty() && !config.scene.water.enabled) {
-    throw std::runtime_error("--script-drop needs a scene with water (this one has water.enabled false)");
+  if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
+    throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +
+                             " needs a scene with water (this one has water.enabled false)");
   }
   config.validate = o.validate;
   config.device = o.device;

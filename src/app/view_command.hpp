@@ -15,6 +15,8 @@ struct ViewOptions {
   std::string screenshot;
   std::vector<std::string> scriptDrops;  // FRAME:X,Z,RADIUS,AMP
   std::string scriptResize;              // FRAME:WxH
+  std::vector<std::string> script;       // FRAME:ACTION[:ARGS]
+  std::string saveDir;
   bool validate = false;
   std::string device;
 };

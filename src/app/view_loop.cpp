@@ -1,12 +1,15 @@
 #include "app/view_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "app/frame_presenter.hpp"
 #include "app/gpu_session.hpp"
 #include "app/swapchain.hpp"
+#include "app/view_input.hpp"
 #include "app/window.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
@@ -26,6 +29,7 @@ struct ViewStats {
   double showSeconds = 0.0;    // in FramePresenter::show and swapchain recreation, waits for FIFO included
   uint32_t recreations = 0;
   vk::Extent2D window;
+  uint32_t lastFrame = 0;  // the frame number of the last frame rendered
 };
 
 // The framebuffer's size once the window is not minimised (until then it
@@ -93,51 +97,83 @@ class Display {
   bool stale_ = false;  // the swapchain no longer matches the window
 };
 
-void saveScreenshot(const std::string& path, const render::RenderedFrame& frame) {
-  if (io::hasExtension(path, ".exr")) {
-    io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, frame.rgba};
-    io::writeExr(path, image, std::vector<io::PixelType>(4, io::PixelType::Float),
-                 io::ExrAttributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC});
-  } else {
-    io::writePng(path, frame.width, frame.height, frame.srgb);
-  }
-}
-
 // The frames, until the window closes or config.frames were shown; the
-// last one shown is kept in `last` (with its linear RGBA when the screenshot
-// is an EXR).
+// last one rendered is kept in `last` (with its linear RGBA when the
+// screenshot is an EXR).
 ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& config, render::RenderedFrame& last) {
-  Display display(ctx, window, {config.width, config.height});
+  const vk::Extent2D frameSize{config.width, config.height};
+  Display display(ctx, window, frameSize);
   render::Renderer renderer(ctx, config.scene, config.width, config.height);
+  ViewSession session(renderer, config.width, config.height, config.saveDir);
+  ViewInput input(frameSize);
+  const ViewInput::Apply apply = [&](const ViewCommand& command) { return session.apply(command); };
   ViewStats stats;
   const Clock::time_point start = Clock::now();
-  Clock::time_point titled = start;
-  for (uint32_t frame = 0; !config.frames || frame < *config.frames; ++frame) {
-    window.pollEvents();
-    // Minimised: nothing is rendered, the loop sleeps in the window system.
-    if (window.shouldClose() || waitForArea(window).width == 0) break;
-    if (config.resize && config.resize->frame == frame) window.resize(config.resize->width, config.resize->height);
-    for (const ScriptedDrop& d : config.drops) {
-      if (d.frame == frame) renderer.addDrop(d.drop);
-    }
-    const bool final = config.frames && frame + 1 == *config.frames;
-    const Clock::time_point renderStart = Clock::now();
-    render::RenderedFrame rendered =
-        renderer.render({.frame = frame, .hdr = final && io::hasExtension(config.screenshot, ".exr"), .ldr = true});
-    const Clock::time_point showStart = Clock::now();
-    stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
-    const bool shown = display.show(rendered.srgb, stats);
-    stats.showSeconds += secondsSince(showStart);
-    if (!shown) break;
-    ++stats.framesShown;
-    last = std::move(rendered);
-    if (secondsSince(titled) > 0.5) {
-      titled = Clock::now();
-      char title[96];
-      std::snprintf(title, sizeof title, "tidepool view - frame %u - %.1f fps", frame,
+  Clock::time_point titled = start, previous = start;
+  std::string title;
+  auto retitle = [&](bool now) {
+    char text[128];
+    if (session.paused()) {
+      std::snprintf(text, sizeof text, "tidepool view - frame %u (paused)", stats.lastFrame);
+    } else {
+      std::snprintf(text, sizeof text, "tidepool view - frame %u - %.1f fps", stats.lastFrame,
                     stats.framesShown / secondsSince(start));
+    }
+    if (text != title && (now || secondsSince(titled) > 0.5)) {
+      title = text;
+      titled = Clock::now();
       window.setTitle(title);
     }
+  };
+  uint32_t shown = 0;  // frames shown so far: the script's clock
+  while (!config.frames || shown < *config.frames) {
+    // Paused on a frame already shown, a viewer run by hand (no --frames, no
+    // script counting frames shown) has nothing new to show: it sleeps until
+    // input comes, or a moment passes (the fly keys are read, not sent).
+    const bool byHand = !config.frames && config.script.empty() && config.drops.empty() && !config.resize;
+    const bool waiting = byHand && session.paused() && !session.needsRender();
+    if (waiting) window.waitEventsTimeout(0.1);
+    else window.pollEvents();
+    // Minimised: nothing is rendered, the loop sleeps in the window system.
+    if (window.shouldClose() || waitForArea(window).width == 0) break;
+    for (const InputEvent& event : window.takeInput()) input.handle(event, window.framebufferSize(), apply);
+    const Clock::time_point now = Clock::now();
+    // A stall (a slow frame, a minimised window) flies no farther than half a second's worth.
+    if (const auto fly = input.flying(window, std::min(0.5, std::chrono::duration<double>(now - previous).count()))) {
+      apply(*fly);
+    }
+    previous = now;
+    if (waiting && !session.needsRender() && !window.takeRefresh()) {
+      retitle(true);
+      continue;
+    }
+    if (config.resize && config.resize->frame == shown) window.resize(config.resize->width, config.resize->height);
+    bool dropped = false;
+    for (const ScriptedDrop& d : config.drops) {
+      if (d.frame != shown) continue;
+      renderer.addDrop(d.drop);
+      dropped = true;
+    }
+    for (const ScriptedCommand& c : config.script) {
+      if (c.frame == shown) apply(c.command);
+    }
+    const bool final = config.frames && shown + 1 == *config.frames;
+    const bool finalExr = final && io::hasExtension(config.screenshot, ".exr");
+    const Clock::time_point renderStart = Clock::now();
+    // Paused on an unchanged frame, the last one rendered is shown again.
+    if (session.needsRender() || dropped || finalExr || last.srgb.empty()) {
+      last = renderer.render({.frame = session.frame(), .hdr = session.wantsHdr() || finalExr, .ldr = true});
+      stats.lastFrame = session.frame();
+      session.rendered(last);
+    }
+    const Clock::time_point showStart = Clock::now();
+    stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
+    const bool presented = display.show(last.srgb, stats);
+    stats.showSeconds += secondsSince(showStart);
+    if (!presented) break;
+    ++shown;
+    ++stats.framesShown;
+    retitle(false);
   }
   stats.seconds = secondsSince(start);
   stats.window = display.extent();
@@ -156,19 +192,19 @@ int runViewer(const ViewConfig& config) {
   const ViewStats stats = showFrames(session.context(), window, config, last);
   const double perFrame = stats.framesShown > 0 ? 1000.0 / stats.framesShown : 0.0;
   std::printf("view: %u frames at %ux%u in %.2f s, %.2f fps (render %.1f ms, show %.1f ms per frame) on %s; "
-              "window %ux%u, swapchain recreations: %u\n",
+              "window %ux%u, swapchain recreations: %u; last frame number %u\n",
               stats.framesShown, config.width, config.height, stats.seconds,
               stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, stats.renderSeconds * perFrame,
               stats.showSeconds * perFrame, session.context().deviceName().c_str(), stats.window.width,
-              stats.window.height, stats.recreations);
+              stats.window.height, stats.recreations, stats.lastFrame);
   if (config.frames && stats.framesShown < *config.frames) {
     throw std::runtime_error("the window was closed after " + std::to_string(stats.framesShown) + " of " +
                              std::to_string(*config.frames) + " frames" +
                              (config.screenshot.empty() ? "" : ": no screenshot written"));
   }
   if (!config.screenshot.empty()) {
-    saveScreenshot(config.screenshot, last);
-    std::printf("wrote %s (frame %u, %ux%u)\n", config.screenshot.c_str(), stats.framesShown - 1, last.width,
+    saveFrame(config.screenshot, last);
+    std::printf("wrote %s (frame %u, %ux%u)\n", config.screenshot.c_str(), stats.lastFrame, last.width,
                 last.height);
   }
   return session.finish();

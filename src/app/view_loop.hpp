@@ -4,21 +4,30 @@
 #include <string>
 #include <vector>
 
+#include "app/view_session.hpp"
 #include "scene/scene.hpp"
 
 namespace tp::app {
 
-// A drop the scripted run makes just before it renders `frame` (that frame
-// shows the water one frame after it): a testing aid.
+// A drop the scripted run makes just before it renders the frame shown
+// `frame`-th (that frame shows the water one frame after it): a testing aid.
 struct ScriptedDrop {
   uint32_t frame = 0;
   scene::Drop drop;
 };
 
-// A window size the scripted run asks for just before it renders `frame`.
+// A window size the scripted run asks for just before the frame shown `frame`-th.
 struct ScriptedResize {
   uint32_t frame = 0;
   uint32_t width = 0, height = 0;
+};
+
+// A command the scripted run applies, through the handler the keyboard and
+// mouse reach (ViewSession::apply), just before it renders the frame shown
+// `frame`-th (counting from 0: with a pause, not the frame number).
+struct ScriptedCommand {
+  uint32_t frame = 0;
+  ViewCommand command;
 };
 
 struct ViewConfig {
@@ -28,13 +37,16 @@ struct ViewConfig {
   std::string screenshot;               // with `frames`: save the last frame shown here (.exr float or .png)
   std::vector<ScriptedDrop> drops;
   std::optional<ScriptedResize> resize;
+  std::vector<ScriptedCommand> script;  // in the order they apply
+  std::string saveDir;                  // where Save writes view-NNNN.exr; empty: the working directory
   bool validate = false;
   std::string device;
 };
 
 // Opens the window and shows frames 0, 1, 2, ... of the scene, one frame
-// number per frame shown, until the window is closed or `frames` were
-// shown; then writes the screenshot. Returns the exit code (GpuSession::finish);
+// number per frame shown (held while paused), taking the keyboard and mouse
+// (app/view_input) and the script, until the window is closed or `frames`
+// were shown; then writes the screenshot. Returns the exit code (GpuSession::finish);
 // throws one line on failure, a window closed before the screenshot's frame
 // included.
 int runViewer(const ViewConfig& config);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace tp::app {
 namespace {
@@ -14,6 +15,8 @@ namespace {
 std::string lastGlfwError;
 
 void recordGlfwError(int, const char* description) { lastGlfwError = description ? description : "unknown error"; }
+
+Window& self(GLFWwindow* window) { return *static_cast<Window*>(glfwGetWindowUserPointer(window)); }
 
 [[noreturn]] void failToOpen(const std::string& what) {
   std::string message = "cannot open a window: " + what;
@@ -43,11 +46,34 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
     failToOpen("GLFW could not create a " + std::to_string(width) + "x" + std::to_string(height) + " window");
   }
   glfwSetWindowUserPointer(window_, this);
-  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) {
-    static_cast<Window*>(glfwGetWindowUserPointer(w))->resized_ = true;
-  });
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { self(w).resized_ = self(w).refresh_ = true; });
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { self(w).refresh_ = true; });
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    if (key == GLFW_KEY_ESCAPE) {
+      if (action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    } else if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+      self(w).record({.kind = InputEvent::Kind::KeyDown, .code = key, .repeat = action == GLFW_REPEAT});
+    }
+  });
+  // A button event is where the last motion event left the cursor:
+  // glfwGetCursorPos asks the X server where it is now, past the events
+  // still queued.
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window_, &x, &y);
+  cursor_ = toFramebuffer(x, y);
+  glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+    Window& window = self(w);
+    window.record({.kind = action == GLFW_PRESS ? InputEvent::Kind::ButtonDown : InputEvent::Kind::ButtonUp,
+                   .code = button,
+                   .position = window.cursor_});
+  });
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+    Window& window = self(w);
+    window.cursor_ = window.toFramebuffer(x, y);
+    window.record({.kind = InputEvent::Kind::CursorMove, .position = window.cursor_});
+  });
+  glfwSetScrollCallback(window_, [](GLFWwindow* w, double x, double y) {
+    self(w).record({.kind = InputEvent::Kind::Scroll, .position = {x, y}});
   });
 }
 
@@ -98,6 +124,26 @@ bool Window::takeResized() {
   return resized;
 }
 
+bool Window::takeRefresh() { return std::exchange(refresh_, false); }
+
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void Window::waitEventsTimeout(double seconds) { glfwWaitEventsTimeout(seconds); }
+
+void Window::record(InputEvent event) { input_.push_back(event); }
+
+std::vector<InputEvent> Window::takeInput() { return std::exchange(input_, {}); }
+
+bool Window::keyHeld(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
+
+// GLFW gives the cursor in screen coordinates, which differ from the
+// framebuffer's pixels on a scaled display.
+glm::dvec2 Window::toFramebuffer(double x, double y) const {
+  int width = 0, height = 0;
+  glfwGetWindowSize(window_, &width, &height);
+  const vk::Extent2D framebuffer = framebufferSize();
+  if (width <= 0 || height <= 0) return {x, y};
+  return {x * framebuffer.width / width, y * framebuffer.height / height};
+}
 
 }  // namespace tp::app

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,16 @@
 struct GLFWwindow;
 
 namespace tp::app {
+
+// One input event, as the window system gave it (app/view_input turns them
+// into the viewer's commands).
+struct InputEvent {
+  enum class Kind { KeyDown, ButtonDown, ButtonUp, CursorMove, Scroll };
+  Kind kind = Kind::KeyDown;
+  int code = 0;             // KeyDown: the GLFW key; ButtonDown, ButtonUp: the GLFW mouse button
+  bool repeat = false;      // KeyDown: the key held down, repeating
+  glm::dvec2 position{0.0};  // the cursor in framebuffer pixels; Scroll: the wheel's offsets (y > 0: forward)
+};
 
 // A GLFW window with no client API, for a Vulkan surface. It initialises
 // GLFW and terminates it when destroyed: one Window at a time. Escape closes
@@ -39,11 +50,28 @@ class Window {
   void resize(uint32_t width, uint32_t height);
   // Whether the framebuffer changed size since the last call.
   bool takeResized();
+  // Whether the window system asked for the content to be drawn again (it
+  // was exposed, or changed size) since the last call.
+  bool takeRefresh();
   void setTitle(const std::string& title);
+  // Like waitEvents, for at most `seconds`.
+  void waitEventsTimeout(double seconds);
+
+  // The input events since the last call, oldest first (Escape is not among
+  // them: it closes the window).
+  std::vector<InputEvent> takeInput();
+  // Whether a key (GLFW_KEY_...) is held down now.
+  bool keyHeld(int key) const;
 
  private:
+  void record(InputEvent event);
+  glm::dvec2 toFramebuffer(double x, double y) const;
+
   GLFWwindow* window_ = nullptr;
   bool resized_ = false;
+  bool refresh_ = false;
+  std::vector<InputEvent> input_;
+  glm::dvec2 cursor_{0.0};  // framebuffer pixels, as the last motion event put it
 };
 
 }  // namespace tp::app
