@@ -235,6 +235,51 @@ TEST_F(ViewTest, PauseHoldsTheFrameNumberWhileTheCameraMoves) {
   EXPECT_GT(differingPixels(shown, unmoved.render({.frame = 5, .hdr = false, .ldr = true}).srgb), size_t(kWidth) * kHeight / 100);
 }
 
+// The reload key, scripted: shaders compiled again from a copy of the
+// sources whose tonemap halves the exposure reach the frame (it equals the
+// frame of the scene with half the exposure), the water going on; a copy with
+// a broken tonemap prints glslang's error and keeps the built code (the
+// frame `render` makes). Validation stays silent through the pipelines made again.
+TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
+  ScratchDir dir;
+  const std::filesystem::path halved = dir.path() / "halved", broken = dir.path() / "broken";
+  for (const auto& copy : {halved, broken}) {
+    std::filesystem::copy(std::filesystem::path(TIDEPOOL_SOURCE_DIR) / "shaders_glsl", copy,
+                          std::filesystem::copy_options::recursive);
+  }
+  std::string tonemap = readText((halved / "tonemap.comp").string());
+  const std::string exposure = "params.exposure)";
+  ASSERT_NE(tonemap.find(exposure), std::string::npos);
+  writeText((halved / "tonemap.comp").string(), tonemap.replace(tonemap.find(exposure), exposure.size(),
+                                                                "0.5 * params.exposure)"));
+  writeText((broken / "tonemap.comp").string(), "#version 450\nvoid main() { broken }\n");
+
+  const scene::Scene scene = scene::defaultScene();
+  scene::Scene half = scene;
+  half.render.exposure *= 0.5f;
+  const auto frame8 = [&](const scene::Scene& s) {
+    render::Renderer renderer(ctx(), s, kWidth, kHeight);
+    return renderer.render({.frame = 8, .hdr = false, .ldr = true}).srgb;
+  };
+
+  const std::string shot = dir.file("halved.png");
+  ProcessResult r = runViewer("--size 160x90 --frames 9 --shader-dir '" + halved.string() + "' --script 4:reload --screenshot " + shot, dir);
+  ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
+  EXPECT_NE(r.out.find("shader reload: 1 changed, 0 failed\n  tonemap.comp.spv\n"), std::string::npos) << r.out;
+  EXPECT_EQ(differingPixels(pngBytes(shot), frame8(half)), 0u);
+
+  const std::string kept = dir.file("kept.png");
+  r = runViewer("--size 160x90 --frames 9 --shader-dir '" + broken.string() + "' --script 4:reload --screenshot " + kept, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("shader reload: tonemap.comp.spv: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("tonemap.comp:2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("shader reload: 0 changed, 1 failed\n"), std::string::npos) << r.out;
+  const std::vector<uint8_t> built = frame8(scene);
+  EXPECT_EQ(differingPixels(pngBytes(kept), built), 0u);
+  EXPECT_GT(differingPixels(built, frame8(half)), size_t(kWidth) * kHeight / 2);  // the halving shows
+}
+
 // The keyboard and mouse, through the X server: xdotool (XTEST pointer,
 // key events sent to the window) pauses the viewer, drags the sphere with
 // the left button, clicks a drop on the water, orbits with the right button
@@ -372,6 +417,7 @@ TEST(View, RefusesBadInputBeforeOpeningAWindow) {
       {"--frames 2 --screenshot " + dir.file("folder.png"), "it is a directory"},
       {"--screenshot " + dir.file("shot.png"), "--frames"},
       {"--frames 0", "--frames"},
+      {"--shader-dir " + dir.file("no-shaders"), "--shader-dir " + dir.file("no-shaders") + ": not a folder"},
       {"--scene " + dir.file("broken.json"), "not valid JSON"},
       {"--scene " + dir.file("missing.json"), "missing.json"},
       {"--script-drop 5:1,2,3", "--script-drop 5:1,2,3: expected FRAME:X,Z,RADIUS,AMP"},

@@ -134,7 +134,8 @@ ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_
                                                         {"release", command::Release{}},
                                                         {"pause", command::TogglePause{}},
                                                         {"step", command::Step{}},
-                                                        {"save", command::Save{}}};
+                                                        {"save", command::Save{}},
+                                                        {"reload", command::ReloadShaders{}}};
     for (const auto& [name, c] : bare) {
       if (action != name) continue;
       values(0, name);
@@ -159,8 +160,8 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       "view",
       "Show the scene live in a window (GLFW, Vulkan swapchain), rendered by the renderer `render` uses: frame N is "
       "the water after N frames. The mouse, wheel and keys move the camera, drop into the water, drag the sphere, "
-      "pause, step and save (below). Escape or closing the window quits. Not yet: the ImGui panel, shader and "
-      "scene hot reload, saving the scene (README, \"Viewer\")");
+      "pause, step, save and reload the shaders (below). Escape or closing the window quits. Not yet: the ImGui "
+      "panel, saving the scene (README, \"Viewer\")");
   cmd->footer(
       "Controls:\n"
       "  left drag on a sphere      move it in the horizontal plane at its centre's height (it displaces the water)\n"
@@ -174,6 +175,8 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       "  N or .                     step one frame (pauses)\n"
       "  P or F12                   save the next frame rendered (paused: the frame shown) as view-NNNN.exr, float\n"
       "                             linear RGBA with the camera attributes, in --save-dir; NNNN: its frame number\n"
+      "  F5                         compile the shaders in --shader-dir again and use those that changed (the water,\n"
+      "                             camera and frame go on); a shader that fails prints its errors and keeps its code\n"
       "  Escape                     quit");
   addSceneOptions(cmd, o.scene);
   cmd->add_option("--size", o.size,
@@ -203,12 +206,17 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
                   "Where the save key (P, F12) writes view-NNNN.exr (NNNN: the frame number; -2, -3, ... added "
                   "rather than overwrite); default: the working directory")
       ->type_name("DIR");
+  cmd->add_option("--shader-dir", o.shaderDir,
+                  "The GLSL sources the reload key (F5) compiles: a folder laid out as shaders_glsl/; default: the "
+                  "shaders_glsl/ this tidepool was built from")
+      ->type_name("DIR")
+      ->capture_default_str();
   cmd->add_option("--script", o.script,
                   "Testing aid: apply a command just before the FRAME-th frame shown (counted from 0; with a pause "
                   "not the frame number), through the same handler as the mouse and keys: FRAME:ACTION[:ARGS] with "
                   "ACTION orbit:DX,DY (window pixels dragged), zoom:NOTCHES, fly:FORWARD,RIGHT,SECONDS, reset, "
                   "drop:X,Y, grab:X,Y, drag:X,Y (frame pixels from the top-left corner), release, pause (toggles), "
-                  "step, save; repeatable, applied by frame and in the order given")
+                  "step, save, reload; repeatable, applied by frame and in the order given")
       ->type_name("SPEC")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -263,6 +271,11 @@ int runView(const ViewOptions& o) {
     io::checkWritable((std::filesystem::path(o.saveDir) / "view-0000.exr").string());
     config.saveDir = o.saveDir;
   }
+  // The default may be gone (a moved binary): then only the reload key says so.
+  if (o.shaderDir != TIDEPOOL_SHADERS_DIR && !std::filesystem::is_directory(o.shaderDir)) {
+    throw std::runtime_error("--shader-dir " + o.shaderDir + ": not a folder");
+  }
+  config.shaderDir = o.shaderDir;
   config.scene = loadScene(o.scene);
   if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
     throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +

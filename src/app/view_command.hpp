@@ -17,6 +17,7 @@ struct ViewOptions {
   std::string scriptResize;              // FRAME:WxH
   std::vector<std::string> script;       // FRAME:ACTION[:ARGS]
   std::string saveDir;
+  std::string shaderDir = TIDEPOOL_SHADERS_DIR;  // the checkout's shaders_glsl/, which the build compiled
   bool validate = false;
   std::string device;
 };

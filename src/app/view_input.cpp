@@ -32,6 +32,9 @@ void ViewInput::handle(const InputEvent& event, vk::Extent2D window, const Apply
         case GLFW_KEY_F12:
           if (!event.repeat) apply(command::Save{});
           break;
+        case GLFW_KEY_F5:
+          if (!event.repeat) apply(command::ReloadShaders{});
+          break;
         default: break;
       }
       break;

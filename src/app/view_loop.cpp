@@ -103,8 +103,8 @@ class Display {
 ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& config, render::RenderedFrame& last) {
   const vk::Extent2D frameSize{config.width, config.height};
   Display display(ctx, window, frameSize);
-  render::Renderer renderer(ctx, config.scene, config.width, config.height);
-  ViewSession session(renderer, config.width, config.height, config.saveDir);
+  ViewSession session(std::make_unique<render::Renderer>(ctx, config.scene, config.width, config.height),
+                      config.width, config.height, config.saveDir, config.shaderDir);
   ViewInput input(frameSize);
   const ViewInput::Apply apply = [&](const ViewCommand& command) { return session.apply(command); };
   ViewStats stats;
@@ -151,7 +151,7 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     bool dropped = false;
     for (const ScriptedDrop& d : config.drops) {
       if (d.frame != shown) continue;
-      renderer.addDrop(d.drop);
+      session.renderer().addDrop(d.drop);
       dropped = true;
     }
     for (const ScriptedCommand& c : config.script) {
@@ -162,7 +162,7 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     const Clock::time_point renderStart = Clock::now();
     // Paused on an unchanged frame, the last one rendered is shown again.
     if (session.needsRender() || dropped || finalExr || last.srgb.empty()) {
-      last = renderer.render({.frame = session.frame(), .hdr = session.wantsHdr() || finalExr, .ldr = true});
+      last = session.renderer().render({.frame = session.frame(), .hdr = session.wantsHdr() || finalExr, .ldr = true});
       stats.lastFrame = session.frame();
       session.rendered(last);
     }

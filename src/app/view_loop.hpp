@@ -39,6 +39,7 @@ struct ViewConfig {
   std::optional<ScriptedResize> resize;
   std::vector<ScriptedCommand> script;  // in the order they apply
   std::string saveDir;                  // where Save writes view-NNNN.exr; empty: the working directory
+  std::string shaderDir;                // the GLSL sources the reload key compiles
   bool validate = false;
   std::string device;
 };

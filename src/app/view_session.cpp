@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/water_pick.hpp"
+#include "gpu/spirv_library.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
 
@@ -19,17 +20,18 @@ void saveFrame(const std::string& path, const render::RenderedFrame& frame) {
   }
 }
 
-ViewSession::ViewSession(render::Renderer& renderer, uint32_t width, uint32_t height, std::string saveDir)
-    : renderer_(renderer), width_(width), height_(height), saveDir_(std::move(saveDir)),
-      camera_(renderer.scene().camera) {}
+ViewSession::ViewSession(std::unique_ptr<render::Renderer> renderer, uint32_t width, uint32_t height,
+                         std::string saveDir, std::filesystem::path shaderDir)
+    : renderer_(std::move(renderer)), width_(width), height_(height), saveDir_(std::move(saveDir)),
+      shaderDir_(std::move(shaderDir)), camera_(renderer_->scene().camera) {}
 
 void ViewSession::setCamera() {
-  renderer_.setCamera(camera_.camera());
+  renderer_->setCamera(camera_.camera());
   changed_ = true;
 }
 
 bool ViewSession::apply(const ViewCommand& command) {
-  const scene::Scene& scene = renderer_.scene();
+  const scene::Scene& scene = renderer_->scene();
   const auto rayThrough = [&](glm::dvec2 pixel) { return pixelRay(scene.camera, width_, height_, pixel); };
   return std::visit(
       [&]<typename C>(const C& c) -> bool {
@@ -47,10 +49,10 @@ bool ViewSession::apply(const ViewCommand& command) {
           setCamera();
         } else if constexpr (std::is_same_v<C, command::Drop>) {
           if (!scene.water.enabled) return false;
-          const sim::WaterState water = renderer_.waterState();
+          const sim::WaterState water = renderer_->waterState();
           const auto hit = pickWater(rayThrough(c.pixel), scene.water, &water);
           if (!hit) return false;
-          renderer_.addDrop(scene::Drop{float(hit->x), float(hit->z), kClickDropRadius, kClickDropAmplitude});
+          renderer_->addDrop(scene::Drop{float(hit->x), float(hit->z), kClickDropRadius, kClickDropAmplitude});
           std::printf("drop at x %.3f, z %.3f\n", hit->x, hit->z);
           changed_ = true;
         } else if constexpr (std::is_same_v<C, command::Grab>) {
@@ -71,7 +73,7 @@ bool ViewSession::apply(const ViewCommand& command) {
           if (!to) return false;
           const glm::dvec3 moved = glm::dvec3(grabbed_->center) + (*to - grabbed_->anchor);
           grabbed_->now = glm::vec3(float(moved.x), grabbed_->center.y, float(moved.z));
-          renderer_.moveSphere(grabbed_->index, grabbed_->now);
+          renderer_->moveSphere(grabbed_->index, grabbed_->now);
           changed_ = true;
         } else if constexpr (std::is_same_v<C, command::Release>) {
           if (grabbed_ && grabbed_->now != grabbed_->center) {
@@ -88,6 +90,19 @@ bool ViewSession::apply(const ViewCommand& command) {
         } else if constexpr (std::is_same_v<C, command::Save>) {
           saveAsked_ = true;
           changed_ = true;
+        } else if constexpr (std::is_same_v<C, command::ReloadShaders>) {
+          // A shader that fails keeps the code it had: its errors are shown
+          // and the frame goes on with the last good pipelines.
+          const gpu::ShaderReload reload = gpu::reloadShaders(shaderDir_);
+          for (const std::string& error : reload.errors) std::fprintf(stderr, "shader reload: %s\n", error.c_str());
+          std::printf("shader reload: %zu changed, %zu failed\n", reload.changed.size(), reload.errors.size());
+          for (const std::string& name : reload.changed) std::printf("  %s\n", name.c_str());
+          std::fflush(stdout);
+          if (!reload.changed.empty()) {
+            renderer_ = std::make_unique<render::Renderer>(*renderer_);
+            changed_ = true;
+          }
+          return reload.errors.empty();
         }
         return true;
       },

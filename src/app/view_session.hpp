@@ -1,5 +1,7 @@
 #pragma once
 #include <cstdint>
+#include <filesystem>
+#include <memory>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
@@ -26,11 +28,12 @@ struct Release {};
 struct TogglePause {};
 struct Step {};  // show the next frame and hold it (pausing if running)
 struct Save {};  // save the frame as view-NNNN.exr
+struct ReloadShaders {};  // compile the shaders again and make the renderer's pipelines from those that changed
 }  // namespace command
 
 using ViewCommand = std::variant<command::Orbit, command::Zoom, command::Fly, command::ResetCamera, command::Drop,
                                  command::Grab, command::Drag, command::Release, command::TogglePause, command::Step,
-                                 command::Save>;
+                                 command::Save, command::ReloadShaders>;
 
 // A drop made by a click: radius and amplitude in metres.
 constexpr float kClickDropRadius = 0.15f;
@@ -48,8 +51,13 @@ void saveFrame(const std::string& path, const render::RenderedFrame& frame);
 // asked for.
 class ViewSession {
  public:
-  // `saveDir`: where Save writes (empty: the working directory).
-  ViewSession(render::Renderer& renderer, uint32_t width, uint32_t height, std::string saveDir);
+  // `saveDir`: where Save writes (empty: the working directory);
+  // `shaderDir`: the GLSL sources ReloadShaders compiles.
+  ViewSession(std::unique_ptr<render::Renderer> renderer, uint32_t width, uint32_t height, std::string saveDir,
+              std::filesystem::path shaderDir);
+
+  // The renderer, which ReloadShaders replaces by one made again from it.
+  render::Renderer& renderer() { return *renderer_; }
 
   // Applies a command. Returns whether it took hold: false for a Drop whose
   // ray misses the water (or a scene without water), a Grab that meets no
@@ -82,9 +90,10 @@ class ViewSession {
   void setCamera();
   std::string savePath() const;
 
-  render::Renderer& renderer_;
+  std::unique_ptr<render::Renderer> renderer_;
   uint32_t width_, height_;
   std::string saveDir_;
+  std::filesystem::path shaderDir_;
   CameraController camera_;
   uint32_t frame_ = 0;
   bool paused_ = false;
