@@ -543,8 +543,8 @@ TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
   double difference = 0.0;
   for (size_t k = 0; k < ga.rgba.size(); ++k) difference += std::abs(ga.rgba[k] - gb.rgba[k]);
   EXPECT_GT(difference / double(ga.rgba.size()), 1e-3);
-  EXPECT_TRUE(std::any_of(gb.passes.begin(), gb.passes.end(), [](const auto& p) { return p.name == "underwater"; }));
-  EXPECT_FALSE(std::any_of(ga.passes.begin(), ga.passes.end(), [](const auto& p) { return p.name == "underwater"; }));
+  EXPECT_TRUE(render::findPass(gb.passes, "underwater"));
+  EXPECT_FALSE(render::findPass(ga.passes, "underwater"));
 }
 
 

@@ -139,7 +139,7 @@ TEST(BenchCli, TilesBenchmarkWritesItsTable) {
   EXPECT_EQ(table.rows, 2 * 2);
 }
 
-// Six variants, skipping off and on: twelve rows. Bad sizes, frame counts and
+// Seven variants, skipping off and on: fourteen rows. Bad sizes, frame counts and
 // paths: one clean line, nothing written.
 TEST(BenchCli, FrameBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;

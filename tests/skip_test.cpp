@@ -23,15 +23,10 @@ namespace {
 
 constexpr uint32_t kWidth = 96, kHeight = 64;
 
-bool recorded(const render::RenderedFrame& f, const std::string& pass) {
-  return std::any_of(f.passes.begin(), f.passes.end(), [&](const auto& p) { return p.name == pass; });
-}
+bool recorded(const render::RenderedFrame& f, const std::string& pass) { return render::findPass(f.passes, pass); }
 
 const render::RecordedPass* find(const render::RenderedFrame& f, const std::string& pass) {
-  for (const auto& p : f.passes) {
-    if (p.name == pass) return &p;
-  }
-  return nullptr;
+  return render::findPass(f.passes, pass);
 }
 
 bool anyPassUses(const render::RenderedFrame& f, const std::string& resource) {

@@ -4,24 +4,15 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
-#include <fstream>
 #include <mutex>
 #include <optional>
-#include <sstream>
+
+#include "io/text_file.hpp"
 
 namespace tp::gpu {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::optional<std::string> readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
 
 // `#include "x"`: the including file's folder first, then the include folder
 // (glslangValidator's -I); `#include <x>`: the include folder.
@@ -44,7 +35,7 @@ class Includer : public glslang::TShader::Includer {
 
  private:
   IncludeResult* tryFrom(const fs::path& path) {
-    std::optional<std::string> text = readText(path);
+    std::optional<std::string> text = io::readTextFile(path);
     if (!text) return nullptr;
     auto* owned = new std::string(std::move(*text));
     return new IncludeResult(path.string(), owned->data(), owned->size(), owned);
@@ -67,7 +58,7 @@ GlslCompile compileGlsl(const fs::path& source, const fs::path& includeDir, cons
   std::call_once(initialised, [] { glslang::InitializeProcess(); });
   const std::optional<EShLanguage> stage = stageOf(source);
   if (!stage) return {{}, source.string() + ": not a .comp, .vert or .frag shader"};
-  const std::optional<std::string> text = readText(source);
+  const std::optional<std::string> text = io::readTextFile(source);
   if (!text) return {{}, "cannot read " + source.string()};
 
   glslang::TShader shader(*stage);

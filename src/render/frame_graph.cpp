@@ -182,6 +182,26 @@ std::vector<bool> FrameGraph::toRecord(std::span<const ResourceRef> requested) c
   return keep;
 }
 
+namespace {
+
+// Both constnesses of findPass.
+template <typename Passes>
+auto* findPassIn(Passes& passes, std::string_view name) {
+  decltype(&passes.front()) found = nullptr;
+  for (auto& p : passes) {
+    if (p.name == name) return &p;
+  }
+  return found;
+}
+
+}  // namespace
+
+RecordedPass* findPass(std::vector<RecordedPass>& passes, std::string_view name) { return findPassIn(passes, name); }
+
+const RecordedPass* findPass(const std::vector<RecordedPass>& passes, std::string_view name) {
+  return findPassIn(passes, name);
+}
+
 std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<const ResourceRef> requested,
                                              gpu::GpuTimer* timer) {
   const vk::raii::CommandBuffer& cmd = context.cmd;

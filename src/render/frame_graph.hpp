@@ -2,6 +2,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gpu/barriers.hpp"
@@ -48,6 +49,10 @@ struct RecordedPass {
   gpu::CommandCounts counts;  // what the pass recorded
   std::vector<std::string> resources;  // the names of the images and buffers it uses
 };
+
+// The pass of that name among those a frame recorded; null when it was left out.
+RecordedPass* findPass(std::vector<RecordedPass>& passes, std::string_view name);
+const RecordedPass* findPass(const std::vector<RecordedPass>& passes, std::string_view name);
 
 struct PassOptions {
   // The pass's outputs keep their contents from frame to frame and depend on

@@ -542,15 +542,13 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }, "frame rendering");
   const auto times = timer.read();
   for (size_t p = 0; p < out.passes.size(); ++p) out.passes[p].milliseconds = times.at(p).milliseconds;
-  const bool simulated =
-      std::any_of(out.passes.begin(), out.passes.end(), [](const RecordedPass& p) { return p.name == "simulate"; });
+  RecordedPass* simulate = findPass(out.passes, "simulate");
+  const bool simulated = simulate != nullptr;
   if (simulated) {
     // The tiles the steps' indirect dispatches launched, known only now.
     const uint64_t listedTiles = res_->water->readTilesDispatched().listed;
     out.counts.workgroups += listedTiles;
-    for (RecordedPass& p : out.passes) {
-      if (p.name == "simulate") p.counts.workgroups += listedTiles;
-    }
+    simulate->counts.workgroups += listedTiles;
     res_->stepsDone += res_->pendingSteps;
     res_->pendingSteps = 0;
     res_->pendingDrops.clear();
@@ -562,7 +560,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     res_->sleep.observe(res_->waterEnergy);
     res_->waterTop = Resources::highestWater(scene_, stats);
   }
-  if (std::any_of(out.passes.begin(), out.passes.end(), [](const RecordedPass& p) { return p.name == "camera medium"; })) {
+  if (findPass(out.passes, "camera medium")) {
     res_->mediumMayNotBeAir = cameraOverWater(scene_);
   }
   out.waterAsleep = res_->water && !simulated;

@@ -6,11 +6,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/text_file.hpp"
 
 namespace tp::scene {
 namespace {
@@ -323,12 +323,9 @@ void saveSceneFile(const std::string& path, const Scene& scene) {
 Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("cannot read scene file " + path + ": not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read scene file " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw std::runtime_error("cannot read scene file " + path);
-  return parseScene(text.str(), path);
+  const std::optional<std::string> text = io::readTextFile(path);
+  if (!text) throw std::runtime_error("cannot read scene file " + path);
+  return parseScene(*text, path);
 }
 
 }  // namespace tp::scene
