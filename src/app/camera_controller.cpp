@@ -11,18 +11,17 @@ constexpr double kMaxElevation = CameraControls::kMaxElevationDegrees * std::num
 
 }  // namespace
 
-CameraController::CameraController(const scene::Camera& home) : home_(home) {
-  const double distance = glm::length(glm::dvec3(home.position) - glm::dvec3(home.target));
-  minDistance_ = std::min(CameraControls::kMinDistance, distance);
-  maxDistance_ = std::max(CameraControls::kMaxDistance, distance);
-  reset();
-}
+CameraController::CameraController(const scene::Camera& home) : home_(home) { reset(); }
 
-void CameraController::reset() {
-  camera_ = home_;
-  target_ = glm::dvec3(home_.target);
-  const glm::dvec3 offset = glm::dvec3(home_.position) - target_;
+void CameraController::reset() { moveTo(home_); }
+
+void CameraController::moveTo(const scene::Camera& camera) {
+  camera_ = camera;
+  target_ = glm::dvec3(camera.target);
+  const glm::dvec3 offset = glm::dvec3(camera.position) - target_;
   distance_ = glm::length(offset);
+  minDistance_ = std::min(minDistance_, distance_);
+  maxDistance_ = std::max(maxDistance_, distance_);
   // A camera straight above or below its target has no azimuth: 0 serves.
   azimuth_ = std::atan2(offset.x, offset.z);
   elevation_ = distance_ > 0.0 ? std::asin(std::clamp(offset.y / distance_, -1.0, 1.0)) : 0.0;

@@ -39,6 +39,9 @@ class CameraController {
   void fly(double forward, double right, double seconds);
   // Back to the home camera, bit for bit.
   void reset();
+  // To this camera, bit for bit (the panel's edit); moves go on from it, and
+  // reset() still returns home. Its distance widens the zoom's range if need be.
+  void moveTo(const scene::Camera& camera);
 
  private:
   void place();  // camera_ from the orbit's state

@@ -23,6 +23,8 @@ constexpr gpu::Access kBlitRead{S::eBlit, A::eTransferRead};
 // The blit of the previous frame read the image (a write-after-read: an
 // execution dependency is enough).
 constexpr gpu::Access kBlitDone{S::eBlit, A::eNone};
+// The panel drawn over the frame (UiOverlay::record).
+constexpr gpu::Access kPanelWrite{S::eColorAttachmentOutput, A::eColorAttachmentWrite};
 
 constexpr uint64_t kTimeoutNs = 600ull * 1000 * 1000 * 1000;
 
@@ -67,7 +69,8 @@ FramePresenter::~FramePresenter() {
   }
 }
 
-FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba) {
+FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba,
+                                            UiOverlay* overlay) {
   if (rgba.size() != upload_.size) throw std::logic_error("FramePresenter::show: the frame is not the size it was made for");
   if (ctx_.device().waitForFences(*done_, VK_TRUE, kTimeoutNs) == vk::Result::eTimeout) {
     throw std::runtime_error("the viewer's last frame did not finish within 600 s on " + ctx_.deviceName());
@@ -87,7 +90,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   }
   // The host's writes before a submission are visible to it: no barrier.
   std::memcpy(upload_.mapped, rgba.data(), rgba.size());
-  record(swapchain, index);
+  record(swapchain, index, overlay);
   ctx_.device().resetFences(*done_);
   const vk::SemaphoreSubmitInfo wait{.semaphore = *acquired_, .stageMask = kAcquired.stage};
   const vk::SemaphoreSubmitInfo signal{.semaphore = *swapchain.readyToPresent(index),
@@ -115,7 +118,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   return suboptimal ? Result::PresentedSuboptimal : Result::Presented;
 }
 
-void FramePresenter::record(const Swapchain& swapchain, uint32_t index) {
+void FramePresenter::record(const Swapchain& swapchain, uint32_t index, UiOverlay* overlay) {
   const vk::Image target = swapchain.image(index);
   const vk::Extent2D window = swapchain.extent();
   const auto dst = letterbox(frameSize_, window);
@@ -154,10 +157,14 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index) {
                            .dstOffsets = dst};
   cmd_.blitImage(frame_.handle(), L::eTransferSrcOptimal, target, L::eTransferDstOptimal, blit,
                  sameSize ? vk::Filter::eNearest : vk::Filter::eLinear);
+  if (overlay) overlay->record(cmd_, swapchain, index);
   // Presentation needs no access of ours: the semaphore signalled after this
   // submission orders the present after the transition.
   const vk::ImageMemoryBarrier2 toPresent[] = {
-      gpu::imageBarrier(target, color, kBlitWrite, L::eTransferDstOptimal, gpu::access::none, L::ePresentSrcKHR)};
+      overlay ? gpu::imageBarrier(target, color, kPanelWrite, L::eColorAttachmentOptimal, gpu::access::none,
+                                  L::ePresentSrcKHR)
+              : gpu::imageBarrier(target, color, kBlitWrite, L::eTransferDstOptimal, gpu::access::none,
+                                  L::ePresentSrcKHR)};
   gpu::pipelineBarrier(cmd_, {}, toPresent);
   cmd_.end();
 }

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "app/swapchain.hpp"
+#include "app/ui_overlay.hpp"
 #include "gpu/memory.hpp"
 
 namespace tp::app {
@@ -41,11 +42,12 @@ class FramePresenter {
     PresentedSuboptimal,  // shown, but the swapchain should be recreated
     OutOfDate,            // not shown: recreate the swapchain and show it again
   };
-  // `rgba`: the frame's RGBA8 sRGB-encoded pixels, rows top to bottom.
-  Result show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba);
+  // `rgba`: the frame's RGBA8 sRGB-encoded pixels, rows top to bottom;
+  // `overlay`: the panel drawn over it, or none.
+  Result show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba, UiOverlay* overlay = nullptr);
 
  private:
-  void record(const Swapchain& swapchain, uint32_t index);
+  void record(const Swapchain& swapchain, uint32_t index, UiOverlay* overlay);
 
   const gpu::Context& ctx_;
   vk::Extent2D frameSize_;

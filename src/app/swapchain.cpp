@@ -55,8 +55,11 @@ bool Swapchain::create(vk::Extent2D framebuffer) {
     extent.height = std::clamp(framebuffer.height, caps.minImageExtent.height, caps.maxImageExtent.height);
   }
   if (extent.width == 0 || extent.height == 0) return false;
-  if (!(caps.supportedUsageFlags & vk::ImageUsageFlagBits::eTransferDst)) {
-    throw std::runtime_error("the window's swapchain images cannot be transfer destinations on " + ctx_.deviceName());
+  // The frame is blitted in, the panel drawn over it.
+  const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eColorAttachment;
+  if ((caps.supportedUsageFlags & usage) != usage) {
+    throw std::runtime_error("the window's swapchain images cannot be transfer destinations and colour attachments on " +
+                             ctx_.deviceName());
   }
   uint32_t count = caps.minImageCount + 1;
   if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
@@ -69,7 +72,7 @@ bool Swapchain::create(vk::Extent2D framebuffer) {
                                                  .imageColorSpace = surfaceFormat_.colorSpace,
                                                  .imageExtent = extent,
                                                  .imageArrayLayers = 1,
-                                                 .imageUsage = vk::ImageUsageFlagBits::eTransferDst,
+                                                 .imageUsage = usage,
                                                  .imageSharingMode = vk::SharingMode::eExclusive,
                                                  .preTransform = caps.currentTransform,
                                                  .compositeAlpha = alpha,
@@ -77,9 +80,17 @@ bool Swapchain::create(vk::Extent2D framebuffer) {
                                                  .clipped = VK_TRUE,
                                                  .oldSwapchain = *swapchain_,
                                              });
+  views_.clear();
   swapchain_ = std::move(next);  // the old one is destroyed here, retired by the new one
   const auto images = swapchain_.getImages();
   images_.assign(images.begin(), images.end());
+  for (vk::Image image : images_) {
+    views_.emplace_back(ctx_.device(), vk::ImageViewCreateInfo{.image = image,
+                                                               .viewType = vk::ImageViewType::e2D,
+                                                               .format = format_,
+                                                               .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}});
+  }
+  ++generation_;
   extent_ = extent;
   readyToPresent_.clear();
   for (size_t i = 0; i < images_.size(); ++i) readyToPresent_.emplace_back(ctx_.device(), vk::SemaphoreCreateInfo{});

@@ -10,6 +10,7 @@
 #include "app/gpu_session.hpp"
 #include "app/view_loop.hpp"
 #include "io/atomic_file.hpp"
+#include "scene/scene_file.hpp"
 
 namespace tp::app {
 namespace {
@@ -70,7 +71,8 @@ ScriptedResize scriptedResize(const std::string& text) {
 constexpr const char* kScriptForm =
     "FRAME:ACTION[:ARGS] with ACTION one of orbit:DX,DY (window pixels dragged), zoom:NOTCHES, "
     "fly:FORWARD,RIGHT,SECONDS (each of FORWARD, RIGHT in -1..1, SECONDS in (0, 10]), reset, drop:X,Y, grab:X,Y, "
-    "drag:X,Y (frame pixels), release, pause, step, save; e.g. 12:orbit:40,-10";
+    "drag:X,Y (frame pixels), release, pause, step, save, reload, save-scene[:PATH.json], set:KEY=VALUE (a scene "
+    "file's key joined by dots, a JSON value or a bare word); e.g. 12:orbit:40,-10, 30:set:render.refraction=apparent";
 
 // `count` finite numbers separated by commas, or nothing.
 std::optional<std::vector<double>> numberList(std::string_view text, size_t count) {
@@ -130,6 +132,17 @@ ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_
     if (action == "drop") return command::Drop{pixel("drop:X,Y (frame pixels)")};
     if (action == "grab") return command::Grab{pixel("grab:X,Y (frame pixels)")};
     if (action == "drag") return command::Drag{pixel("drag:X,Y (frame pixels)")};
+    if (action == "save-scene") {
+      const std::string path = args ? std::string(*args) : std::string();
+      if (args && (path.empty() || !io::hasExtension(path, ".json"))) throw fail("the scene's path must end in .json");
+      if (!path.empty()) io::checkWritable(path);
+      return command::SaveScene{path};
+    }
+    if (action == "set") {
+      const size_t equals = args ? args->find('=') : std::string_view::npos;
+      if (equals == std::string_view::npos || equals == 0) throw fail("expected FRAME:set:KEY=VALUE");
+      return command::Set{std::string(args->substr(0, equals)), std::string(args->substr(equals + 1))};
+    }
     const std::pair<const char*, ViewCommand> bare[] = {{"reset", command::ResetCamera{}},
                                                         {"release", command::Release{}},
                                                         {"pause", command::TogglePause{}},
@@ -160,8 +173,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       "view",
       "Show the scene live in a window (GLFW, Vulkan swapchain), rendered by the renderer `render` uses: frame N is "
       "the water after N frames. The mouse, wheel and keys move the camera, drop into the water, drag the sphere, "
-      "pause, step, save and reload the shaders (below). Escape or closing the window quits. Not yet: the ImGui "
-      "panel, saving the scene (README, \"Viewer\")");
+      "pause, step, save and reload the shaders (below); the panel (Dear ImGui) shows and edits every parameter of "
+      "the scene, the GPU passes and counters, and saves the scene as a file `render` reproduces. Escape or closing "
+      "the window quits");
   cmd->footer(
       "Controls:\n"
       "  left drag on a sphere      move it in the horizontal plane at its centre's height (it displaces the water)\n"
@@ -177,6 +191,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       "                             linear RGBA with the camera attributes, in --save-dir; NNNN: its frame number\n"
       "  F5                         compile the shaders in --shader-dir again and use those that changed (the water,\n"
       "                             camera and frame go on); a shader that fails prints its errors and keeps its code\n"
+      "  F1                         hide / show the panel (the mouse and keys over it work the panel)\n"
       "  Escape                     quit");
   addSceneOptions(cmd, o.scene);
   cmd->add_option("--size", o.size,
@@ -216,10 +231,13 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
                   "not the frame number), through the same handler as the mouse and keys: FRAME:ACTION[:ARGS] with "
                   "ACTION orbit:DX,DY (window pixels dragged), zoom:NOTCHES, fly:FORWARD,RIGHT,SECONDS, reset, "
                   "drop:X,Y, grab:X,Y, drag:X,Y (frame pixels from the top-left corner), release, pause (toggles), "
-                  "step, save, reload; repeatable, applied by frame and in the order given")
+                  "step, save, reload, save-scene[:PATH.json] (default: scene-NNNN.json in --save-dir), set:KEY=VALUE "
+                  "(a scene file's key joined by dots, e.g. water.wave_speed=0.8, spheres.0.radius=0.3, "
+                  "render.refraction=apparent, ao.preset=fast); repeatable, applied by frame and in the order given")
       ->type_name("SPEC")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_flag("--no-panel", o.noPanel, "Start with the panel hidden (F1 shows it)");
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -256,6 +274,7 @@ int runView(const ViewOptions& o) {
   }
   std::stable_sort(script.begin(), script.end(), [](const auto& a, const auto& b) { return a.first.frame < b.first.frame; });
   bool grabbed = false, drops = false, saves = false;
+  config.scene = loadScene(o.scene);
   for (const auto& [scripted, text] : script) {
     const ViewCommand& c = scripted.command;
     if ((std::holds_alternative<command::Drag>(c) || std::holds_alternative<command::Release>(c)) && !grabbed) {
@@ -264,6 +283,15 @@ int runView(const ViewOptions& o) {
     grabbed = (grabbed || std::holds_alternative<command::Grab>(c)) && !std::holds_alternative<command::Release>(c);
     drops |= std::holds_alternative<command::Drop>(c);
     saves |= std::holds_alternative<command::Save>(c);
+    if (const auto* scenePath = std::get_if<command::SaveScene>(&c)) saves |= scenePath->path.empty();
+    if (const auto* set = std::get_if<command::Set>(&c)) {
+      // Each setting must make a possible scene of the one the viewer starts with.
+      try {
+        (void)scene::withSetting(config.scene, set->key, set->value);
+      } catch (const std::exception& e) {
+        throw std::runtime_error("--script " + *text + ": " + e.what());
+      }
+    }
     config.script.push_back(scripted);
   }
   if (!o.saveDir.empty() || saves) {
@@ -276,7 +304,7 @@ int runView(const ViewOptions& o) {
     throw std::runtime_error("--shader-dir " + o.shaderDir + ": not a folder");
   }
   config.shaderDir = o.shaderDir;
-  config.scene = loadScene(o.scene);
+  config.panel = !o.noPanel;
   if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
     throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +
                              " needs a scene with water (this one has water.enabled false)");

@@ -18,6 +18,7 @@ struct ViewOptions {
   std::vector<std::string> script;       // FRAME:ACTION[:ARGS]
   std::string saveDir;
   std::string shaderDir = TIDEPOOL_SHADERS_DIR;  // the checkout's shaders_glsl/, which the build compiled
+  bool noPanel = false;
   bool validate = false;
   std::string device;
 };

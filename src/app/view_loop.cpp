@@ -1,5 +1,7 @@
 #include "app/view_loop.hpp"
 
+#include <GLFW/glfw3.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +12,7 @@
 #include "app/gpu_session.hpp"
 #include "app/swapchain.hpp"
 #include "app/view_input.hpp"
+#include "app/view_panel.hpp"
 #include "app/window.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
@@ -19,6 +22,9 @@ namespace tp::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The weight of the newest frame interval in the panel's frames per second.
+constexpr double kFpsSmoothing = 0.1;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -48,7 +54,7 @@ vk::Extent2D firstArea(Window& window) {
   return area;
 }
 
-// The window, the swapchain on it, and the showing of one frame.
+// The window, the swapchain on it, the panel's overlay, and the showing of one frame.
 class Display {
  public:
   Display(const gpu::Context& ctx, Window& window, vk::Extent2D frameSize)
@@ -56,12 +62,16 @@ class Display {
         window_(window),
         surface_(window.createSurface(ctx.instance())),
         swapchain_(ctx, surface_, firstArea(window)),
+        overlay_(ctx, window.handle(), swapchain_),
         presenter_(ctx, frameSize) {}
 
-  // Shows the frame, recreating the swapchain (and showing it again) until
-  // it is presented. Returns false when the window was closed while
-  // minimised: the frame was not shown.
-  bool show(const std::vector<std::uint8_t>& rgba, ViewStats& stats) {
+  UiOverlay& overlay() { return overlay_; }
+
+  // Shows the frame (with the panel's last widgets over it when `panel`),
+  // recreating the swapchain (and showing it again) until it is presented.
+  // Returns false when the window was closed while minimised: the frame was
+  // not shown.
+  bool show(const std::vector<std::uint8_t>& rgba, bool panel, ViewStats& stats) {
     for (;;) {
       const vk::Extent2D area = waitForArea(window_);
       if (area.width == 0) return false;
@@ -79,7 +89,7 @@ class Display {
         stale_ = false;
         ++stats.recreations;
       }
-      switch (presenter_.show(swapchain_, rgba)) {
+      switch (presenter_.show(swapchain_, rgba, panel ? &overlay_ : nullptr)) {
         case FramePresenter::Result::Presented: return true;
         case FramePresenter::Result::PresentedSuboptimal: stale_ = true; return true;
         case FramePresenter::Result::OutOfDate: stale_ = true; break;
@@ -93,6 +103,7 @@ class Display {
   Window& window_;
   vk::raii::SurfaceKHR surface_;
   Swapchain swapchain_;
+  UiOverlay overlay_;          // before the presenter: destroyed after it waits for its last frame
   FramePresenter presenter_;
   bool stale_ = false;  // the swapchain no longer matches the window
 };
@@ -125,6 +136,11 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
       window.setTitle(title);
     }
   };
+  ViewPanel panel;
+  bool panelShown = config.panel;
+  // Frames per second over the last frames shown (an exponential average of their intervals).
+  double frameInterval = 0.0;
+  Clock::time_point lastShown = start;
   uint32_t shown = 0;  // frames shown so far: the script's clock
   while (!config.frames || shown < *config.frames) {
     // Paused on a frame already shown, a viewer run by hand (no --frames, no
@@ -136,14 +152,41 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     else window.pollEvents();
     // Minimised: nothing is rendered, the loop sleeps in the window system.
     if (window.shouldClose() || waitForArea(window).width == 0) break;
-    for (const InputEvent& event : window.takeInput()) input.handle(event, window.framebufferSize(), apply);
+    UiOverlay& overlay = display.overlay();
+    for (const InputEvent& event : window.takeInput()) {
+      if (event.kind == InputEvent::Kind::KeyDown && event.code == GLFW_KEY_F1) {
+        if (!event.repeat) panelShown = !panelShown;
+        continue;
+      }
+      // Over the panel, the mouse and keys work the panel alone.
+      const bool key = event.kind == InputEvent::Kind::KeyDown;
+      if (panelShown && (key ? overlay.wantsKeyboard() : overlay.wantsMouse())) continue;
+      input.handle(event, window.framebufferSize(), apply);
+    }
     const Clock::time_point now = Clock::now();
     // A stall (a slow frame, a minimised window) flies no farther than half a second's worth.
-    if (const auto fly = input.flying(window, std::min(0.5, std::chrono::duration<double>(now - previous).count()))) {
-      apply(*fly);
+    if (!(panelShown && overlay.wantsKeyboard())) {
+      if (const auto fly = input.flying(window, std::min(0.5, std::chrono::duration<double>(now - previous).count()))) {
+        apply(*fly);
+      }
     }
     previous = now;
-    if (waiting && !session.needsRender() && !window.takeRefresh()) {
+    if (panelShown) {
+      overlay.beginFrame();
+      const PanelStatus status{.frame = stats.lastFrame,
+                               .paused = session.paused(),
+                               .fps = frameInterval > 0.0 ? 1.0 / frameInterval : 0.0,
+                               .last = last.passes.empty() && last.srgb.empty() ? nullptr : &last,
+                               .shaderErrors = &session.shaderErrors(),
+                               .message = session.message(),
+                               .messageIsError = session.messageIsError()};
+      PanelRequests requests = panel.draw(session.renderer().scene(), status);
+      overlay.endFrame();
+      for (const ViewCommand& c : requests.commands) apply(c);
+      if (requests.scene) session.setScene(*requests.scene);
+    }
+    // With the panel up, a paused frame is shown again for the panel's sake.
+    if (waiting && !session.needsRender() && !window.takeRefresh() && !panelShown) {
       retitle(true);
       continue;
     }
@@ -168,11 +211,15 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     }
     const Clock::time_point showStart = Clock::now();
     stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
-    const bool presented = display.show(last.srgb, stats);
+    const bool presented = display.show(last.srgb, panelShown, stats);
     stats.showSeconds += secondsSince(showStart);
     if (!presented) break;
     ++shown;
     ++stats.framesShown;
+    const Clock::time_point shownAt = Clock::now();
+    const double interval = std::chrono::duration<double>(shownAt - lastShown).count();
+    frameInterval = frameInterval > 0.0 ? (1.0 - kFpsSmoothing) * frameInterval + kFpsSmoothing * interval : interval;
+    lastShown = shownAt;
     retitle(false);
   }
   stats.seconds = secondsSince(start);

@@ -40,6 +40,7 @@ struct ViewConfig {
   std::vector<ScriptedCommand> script;  // in the order they apply
   std::string saveDir;                  // where Save writes view-NNNN.exr; empty: the working directory
   std::string shaderDir;                // the GLSL sources the reload key compiles
+  bool panel = true;                    // the ImGui panel shows at first
   bool validate = false;
   std::string device;
 };

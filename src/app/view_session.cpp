@@ -7,6 +7,7 @@
 #include "gpu/spirv_library.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
+#include "scene/scene_file.hpp"
 
 namespace tp::app {
 
@@ -95,36 +96,124 @@ bool ViewSession::apply(const ViewCommand& command) {
           // and the frame goes on with the last good pipelines.
           const gpu::ShaderReload reload = gpu::reloadShaders(shaderDir_);
           for (const std::string& error : reload.errors) std::fprintf(stderr, "shader reload: %s\n", error.c_str());
-          std::printf("shader reload: %zu changed, %zu failed\n", reload.changed.size(), reload.errors.size());
+          // The summary on stdout either way: the errors themselves went to stderr.
+          tell("shader reload: " + std::to_string(reload.changed.size()) + " changed, " +
+                   std::to_string(reload.errors.size()) + " failed",
+               !reload.errors.empty(), stdout);
           for (const std::string& name : reload.changed) std::printf("  %s\n", name.c_str());
           std::fflush(stdout);
+          shaderErrors_ = reload.errors;
           if (!reload.changed.empty()) {
             renderer_ = std::make_unique<render::Renderer>(*renderer_);
             changed_ = true;
           }
           return reload.errors.empty();
+        } else if constexpr (std::is_same_v<C, command::SaveScene>) {
+          const std::string path = c.path.empty() ? savePath("scene", ".json", lastRendered_.value_or(frame_)) : c.path;
+          try {
+            scene::Scene saved = scene;
+            // Read back from wherever the file goes.
+            if (!saved.sky.image.empty()) saved.sky.image = std::filesystem::absolute(saved.sky.image).string();
+            scene::saveSceneFile(path, saved);
+          } catch (const std::exception& e) {
+            tell(std::string("scene not saved: ") + e.what(), true);
+            return false;
+          }
+          tell("saved scene " + path + " (at frame " + std::to_string(lastRendered_.value_or(frame_)) + ")", false);
+        } else if constexpr (std::is_same_v<C, command::Set>) {
+          try {
+            return setScene(scene::withSetting(scene, c.key, c.value));
+          } catch (const std::exception& e) {
+            tell(e.what(), true);
+            return false;
+          }
         }
         return true;
       },
       command);
 }
 
-std::string ViewSession::savePath() const {
+std::string ViewSession::savePath(const char* stem, const char* extension, uint32_t frame) const {
   const std::filesystem::path dir = saveDir_.empty() ? std::filesystem::path() : std::filesystem::path(saveDir_);
   char name[64];
-  std::snprintf(name, sizeof name, "view-%04u.exr", frame_);
+  std::snprintf(name, sizeof name, "%s-%04u%s", stem, frame, extension);
   std::filesystem::path path = dir / name;
   // Never over an earlier save: a paused frame may be saved from several views.
   for (unsigned k = 2; std::filesystem::exists(path); ++k) {
-    std::snprintf(name, sizeof name, "view-%04u-%u.exr", frame_, k);
+    std::snprintf(name, sizeof name, "%s-%04u-%u%s", stem, frame, k, extension);
     path = dir / name;
   }
   return path.string();
 }
 
+void ViewSession::tell(std::string message, bool error, std::FILE* stream) {
+  if (!stream) stream = error ? stderr : stdout;
+  std::fprintf(stream, "%s\n", message.c_str());
+  std::fflush(stream);
+  message_ = std::move(message);
+  messageIsError_ = error;
+}
+
+namespace {
+
+// The water's own simulation: what a renderer carrying the water on from
+// another must share with it (ior and absorption only shade).
+bool sameWaterMotion(scene::Water a, scene::Water b) {
+  a.ior = b.ior;
+  a.absorption = b.absorption;
+  return a == b;
+}
+
+}  // namespace
+
+bool ViewSession::setScene(const scene::Scene& wanted) {
+  try {
+    scene::validateScene(wanted);
+    const scene::Scene& now = renderer_->scene();
+    if (wanted == now) return true;
+    if (wanted.camera != now.camera) {
+      camera_.moveTo(wanted.camera);
+      setCamera();
+    }
+    // A still sphere's new centre displaces the water as a drag does.
+    if (wanted.spheres.size() == now.spheres.size()) {
+      for (size_t i = 0; i < wanted.spheres.size(); ++i) {
+        const scene::Sphere& a = now.spheres[i];
+        const scene::Sphere& b = wanted.spheres[i];
+        if (a.path.empty() && b.path.empty() && a.center != b.center) renderer_->moveSphere(i, b.center);
+      }
+    }
+    if (now.water.enabled && wanted.water.enabled) {
+      scene::Water dynamics = now.water;
+      dynamics.waveSpeed = wanted.water.waveSpeed;
+      dynamics.damping = wanted.water.damping;
+      dynamics.boundary = wanted.water.boundary;
+      dynamics.maxSlope = wanted.water.maxSlope;
+      if (dynamics != now.water) renderer_->setWaterDynamics(dynamics);
+    }
+    changed_ = true;
+    if (renderer_->scene() == wanted) return true;
+    const uint32_t width = renderer_->width(), height = renderer_->height();
+    if (sameWaterMotion(renderer_->scene().water, wanted.water)) {
+      renderer_ = std::make_unique<render::Renderer>(*renderer_, wanted);
+    } else {
+      // A new simulation: it starts again at frame 0.
+      renderer_ = std::make_unique<render::Renderer>(renderer_->context(), wanted, width, height);
+      frame_ = 0;
+      lastRendered_.reset();
+      grabbed_.reset();
+      tell("the water starts again: its grid, extent, level, frame time or drops changed", false);
+    }
+    return true;
+  } catch (const std::exception& e) {
+    tell(std::string("not applied: ") + e.what(), true);
+    return false;
+  }
+}
+
 void ViewSession::rendered(const render::RenderedFrame& frame) {
   if (saveAsked_) {
-    const std::string path = savePath();
+    const std::string path = savePath("view", ".exr", frame_);
     saveFrame(path, frame);
     std::printf("saved %s (frame %u)\n", path.c_str(), frame_);
     std::fflush(stdout);

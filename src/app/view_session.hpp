@@ -1,11 +1,13 @@
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "app/camera_controller.hpp"
 #include "render/renderer.hpp"
@@ -29,11 +31,15 @@ struct TogglePause {};
 struct Step {};  // show the next frame and hold it (pausing if running)
 struct Save {};  // save the frame as view-NNNN.exr
 struct ReloadShaders {};  // compile the shaders again and make the renderer's pipelines from those that changed
+// Save the scene as it now stands as a scene file (empty path: scene-NNNN.json in the save folder).
+struct SaveScene { std::string path; };
+// Change one setting, named by its scene-file key with dots (scene::withSetting).
+struct Set { std::string key, value; };
 }  // namespace command
 
 using ViewCommand = std::variant<command::Orbit, command::Zoom, command::Fly, command::ResetCamera, command::Drop,
                                  command::Grab, command::Drag, command::Release, command::TogglePause, command::Step,
-                                 command::Save, command::ReloadShaders>;
+                                 command::Save, command::ReloadShaders, command::SaveScene, command::Set>;
 
 // A drop made by a click: radius and amplitude in metres.
 constexpr float kClickDropRadius = 0.15f;
@@ -62,8 +68,24 @@ class ViewSession {
   // Applies a command. Returns whether it took hold: false for a Drop whose
   // ray misses the water (or a scene without water), a Grab that meets no
   // sphere, a Drag with no sphere grabbed or whose ray misses the sphere's
-  // plane (or meets it beyond the far plane); true otherwise.
+  // plane (or meets it beyond the far plane), a shader reload with errors, a
+  // scene save or setting that failed (message() says why); true otherwise.
   bool apply(const ViewCommand& command);
+
+  // Makes the scene `wanted` the one shown, changing what differs in the
+  // cheapest way that keeps the water going: the camera, the water's
+  // dynamics and a sphere's centre live; anything else but the water's own
+  // simulation (grid, extent, level, frame time, drops) by a renderer made
+  // from the current one, which carries the water on; a change to those
+  // restarts the water at frame 0 with a new renderer. An impossible scene
+  // changes nothing: returns false, message() says why.
+  bool setScene(const scene::Scene& wanted);
+
+  // The outcome of the last save, scene change or shader reload, for the panel.
+  const std::string& message() const { return message_; }
+  bool messageIsError() const { return messageIsError_; }
+  // The errors of the last shader reload (empty when it compiled).
+  const std::vector<std::string>& shaderErrors() const { return shaderErrors_; }
 
   // The frame number the next render shows: it advances by one per frame
   // rendered unless paused.
@@ -88,7 +110,11 @@ class ViewSession {
     glm::vec3 now{0.0f};      // where the drag has put it
   };
   void setCamera();
-  std::string savePath() const;
+  // `stem`-NNNN.`extension` in the save folder (NNNN: `frame`), never over an earlier one.
+  std::string savePath(const char* stem, const char* extension, uint32_t frame) const;
+  // Prints the message (on `stream`; by default stderr for an error, else
+  // stdout) and keeps it for the panel.
+  void tell(std::string message, bool error, std::FILE* stream = nullptr);
 
   std::unique_ptr<render::Renderer> renderer_;
   uint32_t width_, height_;
@@ -101,6 +127,9 @@ class ViewSession {
   bool changed_ = false;
   std::optional<uint32_t> lastRendered_;
   std::optional<Grabbed> grabbed_;
+  std::string message_;
+  bool messageIsError_ = false;
+  std::vector<std::string> shaderErrors_;
 };
 
 }  // namespace tp::app

@@ -62,6 +62,8 @@ class Window {
   std::vector<InputEvent> takeInput();
   // Whether a key (GLFW_KEY_...) is held down now.
   bool keyHeld(int key) const;
+  // For ImGui's GLFW backend, which chains its callbacks to this window's.
+  GLFWwindow* handle() const { return window_; }
 
  private:
   void record(InputEvent event);

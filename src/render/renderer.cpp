@@ -369,8 +369,21 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t 
     : ctx_(ctx), scene_(scene), width_(width), height_(height), options_(options),
       res_(std::make_unique<Resources>(ctx, scene_, width, height, options)) {}
 
-Renderer::Renderer(const Renderer& previous)
-    : Renderer(previous.ctx_, previous.scene_, previous.width_, previous.height_, previous.options_) {
+Renderer::Renderer(const Renderer& previous) : Renderer(previous, previous.scene_) {}
+
+namespace {
+const scene::Scene& sameWaterMotion(const scene::Scene& next, const scene::Scene& previous) {
+  scene::Water a = next.water;
+  a.ior = previous.water.ior;
+  a.absorption = previous.water.absorption;
+  if (a != previous.water) throw std::invalid_argument("a changed water simulation needs a new renderer");
+  return next;
+}
+}  // namespace
+
+Renderer::Renderer(const Renderer& previous, const scene::Scene& scene)
+    : Renderer(previous.ctx_, sameWaterMotion(scene, previous.scene_), previous.width_, previous.height_,
+               previous.options_) {
   const Resources& from = *previous.res_;
   if (!res_->water) return;
   // A new start from the previous water: every tile counts as changed once.

@@ -63,6 +63,10 @@ class Renderer {
   // sleep and pending drops and sphere moves. The next frame draws what
   // `previous` would have drawn, given the same shader code.
   explicit Renderer(const Renderer& previous);
+  // A renderer for a changed scene that goes on with `previous`'s water as
+  // Renderer(previous) does. The water must be the same but for its ior and
+  // absorption (throws std::invalid_argument otherwise).
+  Renderer(const Renderer& previous, const scene::Scene& scene);
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
   // A drop into the water before the next frame's simulation (it wakes sleeping water).
@@ -70,6 +74,9 @@ class Renderer {
 
   // The live part of the scene, for the viewer. The scene as it now stands.
   const scene::Scene& scene() const { return scene_; }
+  const gpu::Context& context() const { return ctx_; }
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
   // Takes effect at the next render(); throws on an impossible camera.
   void setCamera(const scene::Camera& camera);
   // Moves sphere `index` to `center` before the next frame's simulation: its

@@ -29,11 +29,11 @@ void requireRange(float value, float lo, float hi, const char* field) {
   }
 }
 
-void requireOneOf(const std::string& value, std::initializer_list<const char*> allowed, const char* field) {
+void requireOneOf(const std::string& value, const std::vector<std::string>& allowed, const char* field) {
   std::string names;
-  for (const char* a : allowed) {
+  for (const std::string& a : allowed) {
     if (value == a) return;
-    names += (names.empty() ? "" : ", ") + std::string(a);
+    names += (names.empty() ? "" : ", ") + a;
   }
   throw std::runtime_error(std::string(field) + " must be one of " + names + ", got '" + value + "'");
 }
@@ -108,16 +108,14 @@ void validateScene(const Scene& s) {
   requireNonNegative(s.ground.albedoA, "ground.albedo_a");
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
-  if (s.render.refraction != "accurate" && s.render.refraction != "apparent") {
-    throw std::runtime_error("render.refraction must be accurate or apparent, got '" + s.render.refraction + "'");
-  }
+  requireOneOf(s.render.refraction, choices::kRefraction, "render.refraction");
   const Water& w = s.water;
   requireRange(float(w.grid), 2.0f, 8192.0f, "water.grid");
   requireRange(w.extent, 1e-3f, 1e4f, "water.extent");
   requireRange(w.level, -1e4f, 1e4f, "water.level");
   requireRange(w.waveSpeed, 1e-6f, 1e4f, "water.wave_speed");
   requireRange(w.damping, 0.0f, 1e4f, "water.damping");
-  if (w.boundary != "clamp" && w.boundary != "wrap") throw std::runtime_error("water.boundary must be clamp or wrap");
+  requireOneOf(w.boundary, choices::kBoundary, "water.boundary");
   requireRange(w.maxSlope, 0.0f, 1e4f, "water.max_slope");
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
   requireRange(w.ior, 1.0f, 3.0f, "water.ior");
@@ -162,16 +160,16 @@ void validateScene(const Scene& s) {
     requireNonNegative(box.albedo, "boxes[].albedo");
   }
   const Ao& ao = s.ao;
-  requireOneOf(ao.pattern, {"hammersley", "random"}, "ao.pattern");
+  requireOneOf(ao.pattern, choices::kAoPattern, "ao.pattern");
   requireRange(float(ao.kernelSize), 1.0f, float(TP_MAX_SSAO_KERNEL), "ao.kernel_size");
   requireRange(ao.radius, 1e-3f, 1e3f, "ao.radius");
   requireRange(ao.bias, 0.0f, 1e3f, "ao.bias");
   requireRange(float(ao.noiseSize), 1.0f, 8.0f, "ao.noise_size");
-  requireOneOf(ao.depthLookup, {"interpolated", "nearest"}, "ao.depth_lookup");
-  requireOneOf(ao.blur, {"off", "box", "bilateral"}, "ao.blur");
+  requireOneOf(ao.depthLookup, choices::kAoDepthLookup, "ao.depth_lookup");
+  requireOneOf(ao.blur, choices::kAoBlur, "ao.blur");
   requireRange(float(ao.blurTaps), 1.0f, 32.0f, "ao.blur_taps");
   requireRange(ao.blurDepthTolerance, 1e-6f, 10.0f, "ao.blur_depth_tolerance");
-  requireOneOf(ao.resolution, {"full", "half"}, "ao.resolution");
+  requireOneOf(ao.resolution, choices::kAoResolution, "ao.resolution");
   for (const Drop& d : w.drops) {
     requireRange(d.x, -1e4f, 1e4f, "water.drops[].x");
     requireRange(d.z, -1e4f, 1e4f, "water.drops[].z");

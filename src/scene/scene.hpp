@@ -7,6 +7,18 @@
 
 namespace tp::scene {
 
+// The values each text setting of a scene may take: validateScene checks
+// them, the viewer's panel offers them.
+namespace choices {
+inline const std::vector<std::string> kBoundary{"clamp", "wrap"};
+inline const std::vector<std::string> kRefraction{"accurate", "apparent"};
+inline const std::vector<std::string> kAoPattern{"hammersley", "random"};
+inline const std::vector<std::string> kAoDepthLookup{"interpolated", "nearest"};
+inline const std::vector<std::string> kAoBlur{"off", "box", "bilateral"};
+inline const std::vector<std::string> kAoResolution{"full", "half"};
+inline const std::vector<std::string> kAoPreset{"fast", "balanced", "quality", "baseline"};
+}  // namespace choices
+
 // The procedural sky, in the terms a scene file uses. render/sky_params.cpp
 // turns it into the shader's SkyParams.
 struct Sky {

@@ -1,5 +1,6 @@
 #include "scene/scene_file.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
+#include "scene/scene_keys.hpp"
 
 namespace tp::scene {
 namespace {
@@ -52,6 +54,8 @@ class ObjectReader {
     }
   }
 
+  void color(const char* key, glm::vec3& out) { vec3(key, out); }
+
   void flag(const char* key, bool& out) {
     if (const json* v = take(key)) {
       if (!v->is_boolean()) fail(name(key), "expected true or false, got " + std::string(v->type_name()));
@@ -65,6 +69,9 @@ class ObjectReader {
       out = v->get<std::string>();
     }
   }
+
+  // One of `allowed` (validateScene says which, naming the key, when not).
+  void choice(const char* key, std::string& out, const std::vector<std::string>&) { text(key, out); }
 
   // An array of objects, each read into a T by readFields(reader, element).
   template <typename T, typename F>
@@ -145,8 +152,10 @@ class ObjectWriter {
   void vec3(const char* key, glm::vec3& value) {
     object_[key] = json::array({exactNumber(value.x), exactNumber(value.y), exactNumber(value.z)});
   }
+  void color(const char* key, glm::vec3& value) { vec3(key, value); }
   void flag(const char* key, bool& value) { object_[key] = value; }
   void text(const char* key, std::string& value) { object_[key] = value; }
+  void choice(const char* key, std::string& value, const std::vector<std::string>&) { object_[key] = value; }
   void preset(const char*, Ao&) {}  // the settings themselves are written, each one
 
   template <typename T, typename F>
@@ -173,109 +182,6 @@ class ObjectWriter {
  private:
   json object_ = json::object();
 };
-
-// Every key of a scene file, once, for the reader and the writer alike: V
-// is ObjectReader (fills `s` from JSON) or ObjectWriter (turns `s` into JSON).
-template <typename V>
-void visitScene(V& v, Scene& s) {
-  v.object("camera", [&](auto& r) {
-    r.vec3("position", s.camera.position);
-    r.vec3("target", s.camera.target);
-    r.vec3("up", s.camera.up);
-    r.number("fov", s.camera.fovYDegrees);
-    r.number("near", s.camera.nearPlane);
-    r.number("far", s.camera.farPlane);
-  });
-  v.object("sky", [&](auto& r) {
-    r.number("sun_elevation", s.sky.sunElevationDegrees);
-    r.number("sun_azimuth", s.sky.sunAzimuthDegrees);
-    r.number("sun_angular_radius", s.sky.sunAngularRadiusDegrees);
-    r.vec3("sun_radiance", s.sky.sunRadiance);
-    r.vec3("zenith", s.sky.zenith);
-    r.vec3("horizon", s.sky.horizon);
-    r.vec3("ground", s.sky.ground);
-    r.vec3("glow", s.sky.glow);
-    r.number("zenith_exponent", s.sky.zenithExponent);
-    r.number("glow_exponent", s.sky.glowExponent);
-    r.number("horizon_blend", s.sky.horizonBlend);
-    r.count("texture_width", s.sky.textureWidth);
-    r.text("image", s.sky.image);
-  });
-  v.object("ground", [&](auto& r) {
-    r.number("half_extent", s.ground.halfExtent);
-    r.number("height", s.ground.height);
-    r.number("checker_size", s.ground.checkerSize);
-    r.vec3("albedo_a", s.ground.albedoA);
-    r.vec3("albedo_b", s.ground.albedoB);
-  });
-  v.object("water", [&](auto& r) {
-    r.flag("enabled", s.water.enabled);
-    r.count("grid", s.water.grid);
-    r.number("extent", s.water.extent);
-    r.number("level", s.water.level);
-    r.number("wave_speed", s.water.waveSpeed);
-    r.number("damping", s.water.damping);
-    r.text("boundary", s.water.boundary);
-    r.number("max_slope", s.water.maxSlope);
-    r.number("frame_time", s.water.frameTime);
-    r.number("ior", s.water.ior);
-    r.vec3("absorption", s.water.absorption);
-    r.objects("drops", s.water.drops, [](auto& d, scene::Drop& drop) {
-      d.number("x", drop.x);
-      d.number("z", drop.z);
-      d.number("radius", drop.radius);
-      d.number("amplitude", drop.amplitude);
-    });
-  });
-  v.object("pool", [&](auto& r) {
-    r.number("depth", s.pool.depth);
-    r.vec3("wall_albedo", s.pool.wallAlbedo);
-    r.number("tile_size", s.pool.tileSize);
-    r.vec3("tile_albedo_a", s.pool.tileAlbedoA);
-    r.vec3("tile_albedo_b", s.pool.tileAlbedoB);
-  });
-  v.object("terrain", [&](auto& r) {
-    r.number("amplitude", s.terrain.amplitude);
-    r.number("frequency", s.terrain.frequency);
-    r.count("octaves", s.terrain.octaves);
-    r.number("persistence", s.terrain.persistence);
-    r.count("seed", s.terrain.seed);
-  });
-  v.objects("spheres", s.spheres, [](auto& r, scene::Sphere& sphere) {
-    r.vec3("center", sphere.center);
-    r.number("radius", sphere.radius);
-    r.vec3("albedo", sphere.albedo);
-    r.objects("path", sphere.path, [](auto& k, scene::Keyframe& key) {
-      k.number("time", key.time);
-      k.vec3("center", key.center);
-    });
-  });
-  v.objects("boxes", s.boxes, [](auto& r, scene::Box& box) {
-    r.vec3("center", box.center);
-    r.vec3("size", box.size);
-    r.number("yaw", box.yawDegrees);
-    r.vec3("albedo", box.albedo);
-  });
-  v.object("ao", [&](auto& r) {
-    r.preset("preset", s.ao);  // first: the keys beside it override their own values alone
-    r.flag("enabled", s.ao.enabled);
-    r.text("pattern", s.ao.pattern);
-    r.count("kernel_size", s.ao.kernelSize);
-    r.number("radius", s.ao.radius);
-    r.number("bias", s.ao.bias);
-    r.count("noise_size", s.ao.noiseSize);
-    r.text("depth_lookup", s.ao.depthLookup);
-    r.text("blur", s.ao.blur);
-    r.count("blur_taps", s.ao.blurTaps);
-    r.number("blur_depth_tolerance", s.ao.blurDepthTolerance);
-    r.text("resolution", s.ao.resolution);
-  });
-  v.object("render", [&](auto& r) {
-    r.number("exposure", s.render.exposure);
-    r.text("refraction", s.render.refraction);
-    r.flag("caustics", s.render.caustics);
-  });
-}
 
 }  // namespace
 
@@ -306,6 +212,35 @@ std::string sceneToJson(const Scene& scene) {
   ObjectWriter top;
   visitScene(top, copy);
   return top.result().dump(2) + "\n";
+}
+
+Scene withSetting(const Scene& scene, const std::string& key, const std::string& value) {
+  json root = json::parse(sceneToJson(scene));
+  std::string pointer = "/" + key;
+  std::replace(pointer.begin(), pointer.end(), '.', '/');
+  json setting;
+  try {
+    setting = json::parse(value);
+  } catch (const json::exception&) {
+    setting = value;  // a bare word: apparent, wrap, ...
+  }
+  if (key == "ao.preset") {
+    // Written as its settings, not its name: the preset replaces them all.
+    root["ao"] = json{{"preset", setting}};
+  } else {
+    json::json_pointer at;
+    try {
+      at = json::json_pointer(pointer);
+    } catch (const json::exception&) {
+      throw std::runtime_error(key + ": not a key of the scene");
+    }
+    if (key.empty() || !root.contains(at)) {
+      throw std::runtime_error(key + ": not a key of the scene (keys are a scene file's, joined by dots: "
+                               "water.wave_speed, spheres.0.radius)");
+    }
+    root[at] = setting;
+  }
+  return parseScene(root.dump(), "setting " + key);
 }
 
 void saveSceneFile(const std::string& path, const Scene& scene) {
