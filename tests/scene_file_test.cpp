@@ -81,6 +81,21 @@ TEST(SceneFile, ExampleScenesLoad) {
   EXPECT_GE(count, 4u);
 }
 
+// A drop's frame: absent, the starting state's (0); else a whole frame number.
+TEST(SceneFile, DropFrames) {
+  const auto s = scene::parseScene(R"({"water": {"drops": [{"x": 0.5}, {"x": -0.5, "frame": 40}]}})", "x");
+  ASSERT_EQ(s.water.drops.size(), 2u);
+  EXPECT_EQ(s.water.drops[0].frame, 0u);
+  EXPECT_EQ(s.water.drops[1].frame, 40u);
+  EXPECT_EQ(s.water.drops[1].x, -0.5f);
+  EXPECT_EQ(errorOf(R"({"water": {"drops": [{"frame": -1}]}})"),
+            "shot.json: water.drops[0].frame: expected a non-negative integer, got -1");
+  EXPECT_EQ(errorOf(R"({"water": {"drops": [{}, {"frame": 2.5}]}})"),
+            "shot.json: water.drops[1].frame: expected a non-negative integer, got 2.5");
+  EXPECT_EQ(errorOf(R"({"water": {"drops": [{"frame": "3"}]}})"),
+            "shot.json: water.drops[0].frame: expected a non-negative integer, got \"3\"");
+}
+
 TEST(SceneFile, Boxes) {
   const auto s = scene::parseScene(
       R"({"boxes": [{"center": [1, -0.5, 0], "size": [0.2, 0.4, 0.6], "yaw": 30, "albedo": [0.1, 0.2, 0.3]}, {}]})", "x");
@@ -111,7 +126,7 @@ TEST(SceneFile, SavedScenesReadBackToTheSameScene) {
   awkward.camera.position = {std::nextafter(3.2f, 4.0f), 1.0f / 3.0f, -4.6e-7f};
   awkward.water.frameTime = 1.0f / 60.0f;
   awkward.water.level = std::nextafter(-0.15f, 0.0f);
-  awkward.water.drops = {{0.1f, -0.7f, 0.123456789f, 1e-6f}};
+  awkward.water.drops = {{0.1f, -0.7f, 0.123456789f, 1e-6f}, {0.5f, 0.2f, 0.3f, -0.02f, 12}, {0.0f, 0.0f, 0.1f, 0.01f, 1u << 30}};
   awkward.spheres[0].path = {{0.0f, {0.0f, -0.2f, 0.0f}}, {2.5f, {1.0f / 7.0f, -0.2f, 0.5f}}};
   awkward.boxes = {{.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}, .yawDegrees = 33.3f}};
   awkward.ao = scene::aoPreset("baseline");

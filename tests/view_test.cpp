@@ -399,7 +399,7 @@ TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
   EXPECT_EQ(scene.ao, scene::aoPreset("fast"));
   EXPECT_EQ(scene.water.ior, 1.4f);
   ASSERT_EQ(scene.water.drops.size(), scene::defaultScene().water.drops.size() + 1);
-  //MERGE EXPECT_EQ(scene.water.drops.back().frame, 12u);  // clicked while frame 11 showed: first seen in frame 12
+  EXPECT_EQ(scene.water.drops.back().frame, 12u);  // clicked while frame 11 showed: first seen in frame 12
 
   const ProcessResult rendered = runTidepool("render --validate --scene " + saved + " --width 160 --height 90 "
                                              "--frame 59 --out " + dir.file("render.exr") + " --png " + png, dir);

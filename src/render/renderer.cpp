@@ -18,6 +18,7 @@
 #include "render/ssao_model.hpp"
 #include "render/ssao_passes.hpp"
 #include "render/water_model.hpp"
+#include "render/water_timeline.hpp"
 #include "gpu/transfer.hpp"
 #include "sim/gpu_stepper.hpp"
 
@@ -85,7 +86,7 @@ struct Renderer::Resources {
       indexCount = uint32_t(gridIndices.size());
       indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                         "water grid indices");
-      substeps = render::waterSubsteps(scene.water);
+      clock.substeps = render::waterSubsteps(scene.water);
       restartWater(scene, water->stats(waterStep(scene.water)));
     }
     // The sky: the procedural one, filled by the sky pass, or an image, uploaded
@@ -120,20 +121,18 @@ struct Renderer::Resources {
                             indexCount,
                             waterSurfaceParams(scene)};
       waterStateRefs = waterDraw->stateRefs;
-      // The drops, the steps to this frame, and the stats that say whether the
-      // water is healthy and whether it may sleep; left out while it sleeps.
+      // The live drops and moves, the steps to this frame with the scene's
+      // drops due on the way, and the stats that say whether the water is
+      // healthy and whether it may sleep; left out while it sleeps.
       graph.pass("simulate",
                  {{waterDraw->stateRefs[0], Use::ComputeReadWrite}, {waterDraw->stateRefs[1], Use::ComputeReadWrite}},
                  [this](PassContext& pc) {
-                   for (const scene::Drop& d : pendingDrops) {
-                     const glm::vec3 centre = worldToGrid(live.water, {d.x, 0.0f, d.z});
-                     water->recordDrop(pc.cmd, {centre.x, centre.z}, d.radius, d.amplitude);
-                   }
+                   for (const scene::Drop& d : pendingDrops) recordSceneDrop(pc.cmd, *water, live.water, d);
                    for (const SphereMove& m : pendingMoves) {
                      water->recordSphereMove(pc.cmd, worldToGrid(live.water, m.from), worldToGrid(live.water, m.to),
                                              m.radius, live.water.level);
                    }
-                   recordWaterSteps(pc.cmd, *water, live, waterTime(stepsDone), pendingSteps);
+                   recordWaterRun(pc.cmd, *water, live, clock, stepsDone, stepsDone + pendingSteps, dropsDue);
                    water->recordStats(pc.cmd, waterStep(live.water));
                  },
                  {.cached = false, .runIf = [this] { return simulating; }});
@@ -337,19 +336,17 @@ struct Renderer::Resources {
   ResourceRef normalReadbackRef, positionReadbackRef;
   gpu::Buffer indices;
   uint32_t indexCount = 0;
-  uint32_t substeps = 1;
   uint64_t stepsDone = 0;
-  // The water's clock: it was at frame `frameBase` after `stepBase` steps,
-  // and takes `substeps` steps per frame since (setWaterDynamics re-bases it).
-  uint32_t frameBase = 0;
-  uint64_t stepBase = 0;
+  WaterClock clock;  // setWaterDynamics re-bases it, a restart starts it again
   // Scene time after `steps` steps, for the paths of the spheres.
-  double waterTime(uint64_t steps) const {
-    return double(frameBase) * live.water.frameTime + double(steps - stepBase) * waterStep(live.water);
-  }
+  double waterTime(uint64_t steps) const { return clock.timeAt(steps, live.water); }
   uint64_t pendingSteps = 0;
   std::vector<ResourceRef> waterStateRefs;
   std::vector<scene::Drop> pendingDrops;  // addDrop()'s, for the next frame
+  // Per drop of the scene: applied in this run of the water (addDrop's at
+  // once; the schedule's when the simulation that applies them was recorded).
+  std::vector<bool> dropsApplied;
+  std::vector<size_t> dropsDue;  // the scheduled drops within this frame's steps (dueDrops())
   struct SphereMove {
     glm::vec3 from, to;
     float radius;
@@ -369,37 +366,6 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t 
     : ctx_(ctx), scene_(scene), width_(width), height_(height), options_(options),
       res_(std::make_unique<Resources>(ctx, scene_, width, height, options)) {}
 
-Renderer::Renderer(const Renderer& previous) : Renderer(previous, previous.scene_) {}
-
-namespace {
-const scene::Scene& sameWaterMotion(const scene::Scene& next, const scene::Scene& previous) {
-  scene::Water a = next.water;
-  a.ior = previous.water.ior;
-  a.absorption = previous.water.absorption;
-  if (a != previous.water) throw std::invalid_argument("a changed water simulation needs a new renderer");
-  return next;
-}
-}  // namespace
-
-Renderer::Renderer(const Renderer& previous, const scene::Scene& scene)
-    : Renderer(previous.ctx_, sameWaterMotion(scene, previous.scene_), previous.width_, previous.height_,
-               previous.options_) {
-  const Resources& from = *previous.res_;
-  if (!res_->water) return;
-  // A new start from the previous water: every tile counts as changed once.
-  res_->water->reset(previous.waterState());
-  res_->stepsDone = from.stepsDone;
-  res_->frameBase = from.frameBase;
-  res_->stepBase = from.stepBase;
-  res_->pendingDrops = from.pendingDrops;
-  res_->pendingMoves = from.pendingMoves;
-  res_->sleep = from.sleep;
-  res_->waterEnergy = from.waterEnergy;
-  res_->waterTop = from.waterTop;
-}
-
-Renderer::~Renderer() = default;
-
 namespace {
 
 // Whether a sphere's path moves it at some time in (t0, t1].
@@ -410,11 +376,57 @@ bool bodyMoves(const scene::Scene& scene, double t0, double t1) {
   return false;
 }
 
+// `scene`, when its water is `previous`'s but for what only shades it.
+const scene::Scene& sameWater(const scene::Scene& previous, const scene::Scene& scene) {
+  scene::Water shading = scene.water;
+  shading.ior = previous.water.ior;
+  shading.absorption = previous.water.absorption;
+  if (shading != previous.water) {
+    throw std::invalid_argument(
+        "a renderer that goes on with the water needs the same water but for ior and absorption: "
+        "other water settings need a new renderer (the water restarts)");
+  }
+  return scene;
+}
+
 }  // namespace
+
+Renderer::Renderer(const Renderer& previous) : Renderer(previous, previous.scene_) {}
+
+Renderer::Renderer(const Renderer& previous, const scene::Scene& scene)
+    : Renderer(previous.ctx_, sameWater(previous.scene_, scene), previous.width_, previous.height_, previous.options_) {
+  const Resources& from = *previous.res_;
+  if (!res_->water) return;
+  // A new start from the previous water: every tile counts as changed once.
+  res_->water->reset(previous.waterState());
+  res_->stepsDone = from.stepsDone;
+  res_->clock = from.clock;
+  res_->dropsApplied = from.dropsApplied;
+  res_->pendingDrops = from.pendingDrops;
+  res_->pendingMoves = from.pendingMoves;
+  res_->sleep = from.sleep;
+  res_->waterEnergy = from.waterEnergy;
+  res_->waterTop = from.waterTop;
+}
+
+Renderer::~Renderer() = default;
 
 void Renderer::addDrop(const scene::Drop& drop) {
   if (!res_->water) throw std::runtime_error("a drop needs a scene with water");
-  res_->pendingDrops.push_back(drop);
+  scene::validateDrop(drop);
+  scene::Drop recorded = drop;
+  recorded.frame = res_->clock.frameAt(res_->stepsDone) + 1;
+  // Listed before the scene's drops of the same frame still to come: the
+  // schedule applies those after this one, and a run of the scene applies
+  // drops of one frame in the order listed.
+  std::vector<scene::Drop>& drops = scene_.water.drops;
+  std::vector<bool>& applied = res_->dropsApplied;
+  applied.resize(drops.size(), false);
+  size_t at = 0;
+  while (at < drops.size() && (drops[at].frame != recorded.frame || applied[at])) ++at;
+  drops.insert(drops.begin() + std::ptrdiff_t(at), recorded);
+  applied.insert(applied.begin() + std::ptrdiff_t(at), true);  // by the next simulation, before its steps
+  res_->pendingDrops.push_back(recorded);
 }
 
 void Renderer::setCamera(const scene::Camera& camera) {
@@ -455,9 +467,7 @@ void Renderer::setWaterDynamics(const scene::Water& water) {
   const uint32_t substeps = waterSubsteps(water);
   // Re-base the clock at the frame the water has reached (a whole number of
   // the old frames since the last base: render() steps whole frames).
-  res_->frameBase += uint32_t((res_->stepsDone - res_->stepBase) / res_->substeps);
-  res_->stepBase = res_->stepsDone;
-  res_->substeps = substeps;
+  res_->clock = WaterClock{res_->clock.frameAt(res_->stepsDone), res_->stepsDone, substeps};
   scene_.water = water;
   res_->water->setParams(params);
   res_->sleep = WaterSleep(sleepRule(water));  // its threshold follows the wave speed
@@ -486,21 +496,24 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   if (res_->water) {
     // Frame N shows the water after N frames of simulation from the scene's
     // start, whatever was rendered before: going back restarts it. Sleeping
-    // water skips ahead without a step.
+    // water skips ahead without a step. The scene's later drops come on their
+    // frames (water_timeline.hpp).
     const double dt = waterStep(scene_.water);
-    const auto stepsAt = [&](uint32_t frame) {
-      return res_->stepBase + uint64_t(frame - res_->frameBase) * res_->substeps;
-    };
-    if (request.frame < res_->frameBase || stepsAt(request.frame) < res_->stepsDone) {
-      // From the start, with the water's parameters as they now are.
+    WaterClock& clock = res_->clock;
+    if (request.frame < clock.frameBase || clock.stepsAt(request.frame) < res_->stepsDone) {
+      // From the start, with the water's parameters as they now are; every
+      // drop made live is in the scene, and comes again on its frame.
       res_->water->reset(waterInitialState(scene_.water));
       for (ResourceRef state : res_->waterStateRefs) res_->graph.touch(state);  // uploaded outside the graph
-      res_->stepsDone = res_->stepBase = 0;
-      res_->frameBase = 0;
+      res_->stepsDone = 0;
+      clock = WaterClock{.substeps = clock.substeps};  // from frame 0 at step 0
+      res_->dropsApplied.assign(scene_.water.drops.size(), false);
+      res_->pendingDrops.clear();
       res_->restartWater(scene_, res_->water->stats(dt));
     }
-    const uint64_t target = stepsAt(request.frame);
-    const bool disturbed = !res_->pendingDrops.empty() || !res_->pendingMoves.empty();
+    const uint64_t target = clock.stepsAt(request.frame);
+    res_->dropsDue = dueDrops(scene_.water, clock, res_->stepsDone, target, res_->dropsApplied);
+    const bool disturbed = !res_->pendingDrops.empty() || !res_->pendingMoves.empty() || !res_->dropsDue.empty();
     if (disturbed || bodyMoves(scene_, res_->waterTime(res_->stepsDone), res_->waterTime(target))) {
       res_->sleep.wake();
     }
@@ -566,6 +579,8 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     res_->pendingSteps = 0;
     res_->pendingDrops.clear();
     res_->pendingMoves.clear();
+    res_->dropsApplied.resize(scene_.water.drops.size(), false);
+    for (const size_t i : res_->dropsDue) res_->dropsApplied[i] = true;
     const sim::WaterStats stats = res_->water->readStats();
     sim::checkHealth(stats, res_->stepsDone, std::numeric_limits<double>::infinity());
     const double area = double(scene_.water.extent) * scene_.water.extent;

@@ -53,26 +53,43 @@ struct RenderedFrame {
 
 // Renders a scene offscreen at a fixed size. The frame graph is declared once;
 // each render() records only the passes its request needs.
+//
+// Frame N shows the water after N frames of simulation, the scene's later
+// drops (scene::Drop::frame >= 1) each applied once on its frame, whatever was
+// rendered before: going back to an earlier frame restarts the water and
+// replays them. Drops made live (addDrop) are recorded in the scene, so a new
+// renderer of scene() renders the same frames to the bit, with one exception:
+// a drop made while paused at frame f (frame f rendered again) shows in the
+// live frame f at once, but in the recorded scene from frame f+1.
 class Renderer {
  public:
   Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
            const RendererOptions& options = {});
-  // A renderer that goes on where `previous` is (shader hot reload: its
-  // pipelines are made from the code gpu::spirvModule now gives): the same
-  // size and options, the scene as it now stands, the water's state, clock,
-  // sleep and pending drops and sphere moves. The next frame draws what
-  // `previous` would have drawn, given the same shader code.
-  explicit Renderer(const Renderer& previous);
-  // A renderer for a changed scene that goes on with `previous`'s water as
-  // Renderer(previous) does. The water must be the same but for its ior and
-  // absorption (throws std::invalid_argument otherwise).
+  // A renderer of `scene`, a changed scene (refraction, caustics, AO, sky,
+  // ground, pool, terrain, objects, exposure, camera, the water's ior and
+  // absorption...), that goes on where `previous` is, its pipelines made from
+  // the code gpu::spirvModule now gives (shader hot reload): the same size
+  // and options, and the water's state, clock, sleep, applied drops and
+  // pending drops and sphere moves. The next frame draws what a renderer of
+  // `scene` would draw having been where `previous` is. `scene.water` must be
+  // `previous.scene().water` in every field but ior and absorption (which
+  // only shade it); otherwise throws std::invalid_argument: other water
+  // needs a new renderer (the water restarts).
   Renderer(const Renderer& previous, const scene::Scene& scene);
+  // The same, with the scene as `previous` now has it.
+  explicit Renderer(const Renderer& previous);
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
-  // A drop into the water before the next frame's simulation (it wakes sleeping water).
+  // A drop into the water (it wakes sleeping water), applied at the start of
+  // the next render's simulation: at once when that render is of the same
+  // frame (paused), else before its steps. It is recorded in the scene with
+  // the frame after the one the water has reached (listed before the
+  // scene's drops of that frame still to come, which come after it). Throws
+  // on an impossible drop, or without water.
   void addDrop(const scene::Drop& drop);
 
-  // The live part of the scene, for the viewer. The scene as it now stands.
+  // The live part of the scene, for the viewer. The scene as it now stands,
+  // with every drop made live.
   const scene::Scene& scene() const { return scene_; }
   const gpu::Context& context() const { return ctx_; }
   uint32_t width() const { return width_; }

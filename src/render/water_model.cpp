@@ -5,6 +5,7 @@
 #include "render/objects_model.hpp"
 #include "render/pool_model.hpp"
 #include "gpu/submit.hpp"
+#include "render/water_timeline.hpp"
 
 namespace tp::render {
 
@@ -39,9 +40,12 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
 
 sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
   sim::GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);
-  const uint64_t steps = uint64_t(frame) * waterSubsteps(scene.water);
-  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterSteps(cmd, stepper, scene, 0.0, steps); },
-                     "water simulation");
+  const WaterClock clock{.substeps = waterSubsteps(scene.water)};  // from the start
+  const uint64_t steps = clock.stepsAt(frame);
+  const std::vector<size_t> due = dueDrops(scene.water, clock, 0, steps, {});
+  gpu::submitAndWait(
+      ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterRun(cmd, stepper, scene, clock, 0, steps, due); },
+      "water simulation");
   return stepper.download();
 }
 
@@ -73,6 +77,7 @@ sim::WaterState waterInitialState(const scene::Water& w) {
   const sim::WaterParams p = waterParams(w);
   sim::WaterState s = sim::flatState(w.grid);
   for (const scene::Drop& d : w.drops) {
+    if (d.frame != 0) continue;  // a later drop comes on its frame (water_timeline.hpp)
     const glm::vec3 centre = worldToGrid(w, {d.x, 0.0f, d.z});
     sim::addDrop(s, w.extent, centre.x, centre.z, d.radius, d.amplitude);
   }

@@ -20,7 +20,8 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, sim::GpuStepper& water
                       double start, uint64_t count);
 
 // The scene's water after `frame` frames, simulated on the GPU exactly as the
-// renderer does it, downloaded (for export and the CPU reference).
+// renderer does it (its later drops each on its frame), downloaded (for
+// export and the CPU reference).
 sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame);
 
 // From the scene's water to the simulation and the surface pass: the one place
@@ -31,7 +32,7 @@ glm::vec3 worldToGrid(const scene::Water& water, glm::vec3 p);
 // Seconds per simulation step: the frame time split into the fewest stable substeps.
 uint32_t waterSubsteps(const scene::Water& water);
 double waterStep(const scene::Water& water);
-// Flat water with the scene's drops, at rest (sim::startAtRest).
+// Flat water with the scene's frame-0 drops, at rest (sim::startAtRest).
 sim::WaterState waterInitialState(const scene::Water& water);
 // Two triangles per grid quad, counter-clockwise seen from above.
 std::vector<uint32_t> waterGridIndices(uint32_t n);

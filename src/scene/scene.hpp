@@ -100,15 +100,21 @@ struct Box {
   bool operator==(const Box&) const = default;
 };
 
+// A raised-cosine drop into the water. Frame 0: part of the starting state
+// (added to flat water, which then starts at rest). Frame k >= 1: added to the
+// water as it stands after frame k-1, before the steps into frame k, so frame
+// k is the first frame that shows it (render/water_timeline.hpp schedules it).
 struct Drop {
   float x = 0.0f, z = 0.0f;  // world position of the centre
   float radius = 0.3f;
   float amplitude = 0.04f;
+  unsigned frame = 0;
   bool operator==(const Drop&) const = default;
 };
 
 // The simulated water: a square of `extent` metres centred on the origin (the
-// pool's size), at rest at height `level`, disturbed by drops at frame 0.
+// pool's size), at rest at height `level`, disturbed by drops at frame 0 and
+// at later frames.
 struct Water {
   bool enabled = true;
   unsigned grid = 128;
@@ -185,5 +191,7 @@ Scene sceneAt(const Scene& scene, float t);
 
 // Throws with the field and the bound on the first impossible value.
 void validateScene(const Scene& scene);
+// The same for one of water.drops (a drop made live, too).
+void validateDrop(const Drop& drop);
 
 }  // namespace tp::scene

@@ -59,6 +59,7 @@ void visitScene(V& v, Scene& s) {
       d.number("z", drop.z);
       d.number("radius", drop.radius);
       d.number("amplitude", drop.amplitude);
+      d.count("frame", drop.frame);
     });
   });
   v.object("pool", [&](auto& r) {
