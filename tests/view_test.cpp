@@ -389,9 +389,12 @@ TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
   const ProcessResult r = runViewer("--size 160x90 --frames 60 --script 12:drop:70,70 --script-resize 20:240x160 "
                                     "--script 25:set:render.refraction=apparent --script 30:set:ao.preset=fast "
                                     "--script 35:set:water.ior=1.4 --script 59:save-scene:" + saved +
-                                    " --screenshot " + shot, dir);
+                                    " --profile --screenshot " + shot, dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("drop at x"), std::string::npos) << "the click missed the water:\n" << r.out;
+  // --profile: the last frame's passes, the apparent mode's copy of the pool among them.
+  EXPECT_NE(r.out.find("last frame rendered (59):\npass "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nunderwater "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("window 240x160"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("saved scene " + saved), std::string::npos) << r.out;
   const scene::Scene scene = scene::loadSceneFile(saved);

@@ -238,6 +238,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_flag("--no-panel", o.noPanel, "Start with the panel hidden (F1 shows it)");
+  cmd->add_flag("--profile", o.profile,
+                "At the end, print the last frame rendered's passes as `render --profile` does (GPU ms, dispatches, "
+                "draws, workgroups)");
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -305,6 +308,7 @@ int runView(const ViewOptions& o) {
   }
   config.shaderDir = o.shaderDir;
   config.panel = !o.noPanel;
+  config.profile = o.profile;
   if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
     throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +
                              " needs a scene with water (this one has water.enabled false)");

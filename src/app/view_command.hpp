@@ -19,6 +19,7 @@ struct ViewOptions {
   std::string saveDir;
   std::string shaderDir = TIDEPOOL_SHADERS_DIR;  // the checkout's shaders_glsl/, which the build compiled
   bool noPanel = false;
+  bool profile = false;
   bool validate = false;
   std::string device;
 };

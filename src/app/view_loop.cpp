@@ -10,6 +10,7 @@
 
 #include "app/frame_presenter.hpp"
 #include "app/gpu_session.hpp"
+#include "app/profile_table.hpp"
 #include "app/swapchain.hpp"
 #include "app/view_input.hpp"
 #include "app/view_panel.hpp"
@@ -244,6 +245,10 @@ int runViewer(const ViewConfig& config) {
               stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, stats.renderSeconds * perFrame,
               stats.showSeconds * perFrame, session.context().deviceName().c_str(), stats.window.width,
               stats.window.height, stats.recreations, stats.lastFrame);
+  if (config.profile && !last.passes.empty()) {
+    std::printf("last frame rendered (%u):\n", stats.lastFrame);
+    printProfile(last);
+  }
   if (config.frames && stats.framesShown < *config.frames) {
     throw std::runtime_error("the window was closed after " + std::to_string(stats.framesShown) + " of " +
                              std::to_string(*config.frames) + " frames" +

@@ -110,7 +110,9 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
       {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs.module, .pName = "main"},
   };
   vk::PipelineVertexInputStateCreateInfo vertexInput{};  // vertices are pulled from buffers or gl_VertexIndex
-  vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = desc.topology};
+  // Strips are drawn row by row, the rows separated by the restart index.
+  const bool strip = desc.topology == vk::PrimitiveTopology::eTriangleStrip;
+  vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = desc.topology, .primitiveRestartEnable = strip};
   vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   vk::PipelineRasterizationStateCreateInfo raster{
       .polygonMode = vk::PolygonMode::eFill, .cullMode = desc.cullMode, .frontFace = vk::FrontFace::eCounterClockwise, .lineWidth = 1.0f};

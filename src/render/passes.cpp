@@ -232,7 +232,8 @@ WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth)
                                                  .colorFormats = {kHdrFormat},
                                                  .depthFormat = kDepthFormat,
                                                  .depthTest = true,
-                                                 .depthWrite = true})) {}
+                                                 .depthWrite = true,
+                                                 .topology = vk::PrimitiveTopology::eTriangleStrip})) {}
 
 static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water) {
   cmd.bindIndexBuffer(water.indices->handle(), 0, vk::IndexType::eUint32);
@@ -272,6 +273,7 @@ CausticsPass::CausticsPass(const gpu::Context& ctx)
                                                  .fragmentShader = "caustics.frag",
                                                  .pushSize = sizeof(shader::WaterSurfaceParams),
                                                  .colorFormats = {kCausticsFormat},
+                                                 .topology = vk::PrimitiveTopology::eTriangleStrip,
                                                  .additive = true})) {}
 
 void CausticsPass::declare(FrameGraph& graph, const WaterDraw& water, const PoolDraw& pool,
@@ -316,7 +318,9 @@ AovPass::AovPass(const gpu::Context& ctx, bool withPoolAndWater)
   if (withPoolAndWater) {
     wallsPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", 0));
     floorPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_floor.vert", sizeof(glm::uvec4)));
-    waterPipeline = gpu::createGraphicsPipeline(ctx, aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams)));
+    gpu::GraphicsPipelineDesc water = aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams));
+    water.topology = vk::PrimitiveTopology::eTriangleStrip;  // the renderer's water indices (waterGridStrips)
+    waterPipeline = gpu::createGraphicsPipeline(ctx, water);
   }
 }
 

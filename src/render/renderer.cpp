@@ -82,7 +82,7 @@ struct Renderer::Resources {
       // same bits as the whole grid; with skipping off, every tile.
       water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);
       if (!skipping) water->setTileDispatch(sim::TileDispatch::Full);
-      const auto gridIndices = waterGridIndices(scene.water.grid);
+      const auto gridIndices = waterGridStrips(scene.water.grid);
       indexCount = uint32_t(gridIndices.size());
       indices = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                         "water grid indices");

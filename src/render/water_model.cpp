@@ -85,6 +85,17 @@ sim::WaterState waterInitialState(const scene::Water& w) {
   return s;
 }
 
+std::vector<uint32_t> waterGridStrips(uint32_t n) {
+  std::vector<uint32_t> indices;
+  indices.reserve(size_t(n - 1) * (2 * n + 1));
+  for (uint32_t j = 0; j + 1 < n; ++j) {
+    // a0 c0 a1 c1 ...: strip triangle 2i is (a, c, b) and 2i+1 (b, c, d), as in the list.
+    for (uint32_t i = 0; i < n; ++i) indices.insert(indices.end(), {j * n + i, (j + 1) * n + i});
+    indices.push_back(kStripRestart);
+  }
+  return indices;
+}
+
 std::vector<uint32_t> waterGridIndices(uint32_t n) {
   std::vector<uint32_t> indices;
   indices.reserve(size_t(n - 1) * (n - 1) * 6);

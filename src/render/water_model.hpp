@@ -36,6 +36,13 @@ double waterStep(const scene::Water& water);
 sim::WaterState waterInitialState(const scene::Water& water);
 // Two triangles per grid quad, counter-clockwise seen from above.
 std::vector<uint32_t> waterGridIndices(uint32_t n);
+// The same triangles, in the same order with the same corners first, as one
+// triangle strip per row of quads, rows separated by kStripRestart: a third of
+// the indices, so a third of the vertex shader invocations where the device
+// shades each index (lavapipe: on one thread, the cost of a mesh pass that
+// does not shrink with the frame).
+inline constexpr uint32_t kStripRestart = 0xFFFFFFFFu;
+std::vector<uint32_t> waterGridStrips(uint32_t n);
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
 // The ground's push constants, with the pool's hole when there is a pool.
 shader::GroundParams groundParams(const scene::Scene& scene);

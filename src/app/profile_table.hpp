@@ -1,0 +1,11 @@
+#pragma once
+#include "render/renderer.hpp"
+
+namespace tp::app {
+
+// A frame's passes as a table on stdout: GPU ms (n/a without timestamps),
+// dispatches, draws and workgroups per pass, then the totals (render
+// --profile, view --profile).
+void printProfile(const render::RenderedFrame& frame);
+
+}  // namespace tp::app
