@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libembree-dev python3-matplotlib
   xvfb xauth xdotool  # the viewer's tests open windows in Xvfb (xauth for xvfb-run) and type and click in them
+  parallel  # the README's recipe for a shot on one machine (tools/farm/parallel-shot.sh), tested
 )
 
 missing=()

@@ -6,7 +6,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "app/frame_output.hpp"
 #include "app/gpu_session.hpp"
+#include "app/render_sequence.hpp"
 #include "app/profile_table.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
@@ -19,71 +21,6 @@
 
 namespace tp::app {
 namespace {
-
-bool wants(const std::vector<std::string>& aovs, const char* name) {
-  return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
-}
-
-// One float per pixel of a `width` x `height` image, nearest-sampled to the
-// frame's size (the raw AO at half resolution).
-std::vector<float> toFrameSize(const std::vector<float>& values, uint32_t width, uint32_t height, uint32_t frameWidth,
-                               uint32_t frameHeight) {
-  std::vector<float> out(size_t(frameWidth) * frameHeight);
-  for (uint32_t y = 0; y < frameHeight; ++y) {
-    for (uint32_t x = 0; x < frameWidth; ++x) {
-      out[size_t(y) * frameWidth + x] = values[size_t(y * height / frameHeight) * width + x * width / frameWidth];
-    }
-  }
-  return out;
-}
-
-// RGBA, then each requested AOV's channels (layer.channel names), interleaved.
-// `ao`, `aoRaw`, `aoRef`: one value per pixel, where requested.
-io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<std::string>& aovs,
-                        const std::vector<float>& aoRaw, const std::vector<float>& aoRef) {
-  struct Channel {
-    std::string name;
-    const std::vector<float>* source;
-    int component;
-    int stride;
-  };
-  std::vector<Channel> channels{
-      {"R", &frame.rgba, 0, 4}, {"G", &frame.rgba, 1, 4}, {"B", &frame.rgba, 2, 4}, {"A", &frame.rgba, 3, 4}};
-  if (wants(aovs, "Z")) channels.push_back({"Z", &frame.position, 3, 4});
-  if (wants(aovs, "N")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("N.") + "xyz"[c], &frame.normal, c, 4});
-  }
-  if (wants(aovs, "P")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("P.") + "xyz"[c], &frame.position, c, 4});
-  }
-  if (wants(aovs, "ao")) channels.push_back({"ao", &frame.ao, 0, 1});
-  if (wants(aovs, "ao_raw")) channels.push_back({"ao_raw", &aoRaw, 0, 1});
-  if (wants(aovs, "ao_ref")) channels.push_back({"ao_ref", &aoRef, 0, 1});
-  io::FloatImage image{frame.width, frame.height, {}, {}};
-  for (const auto& c : channels) image.channels.push_back(c.name);
-  const size_t pixels = size_t(frame.width) * frame.height;
-  image.pixels.resize(pixels * channels.size());
-  for (size_t p = 0; p < pixels; ++p) {
-    for (size_t c = 0; c < channels.size(); ++c) {
-      image.pixels[p * channels.size() + c] = (*channels[c].source)[p * channels[c].stride + channels[c].component];
-    }
-  }
-  return image;
-}
-
-// Ambient occlusion ray traced from the frame's own G-buffer, the ground truth
-// of the SSAO error figures.
-std::vector<float> referenceAo(const scene::Scene& scene, const render::RenderedFrame& frame, uint32_t frameNumber) {
-  const render::WorldGbuffer g = render::worldGbuffer(frame);
-  render::ReferenceAoOptions options{.radius = scene.ao.radius,
-                                     .exactSpheres = false,
-                                     .originOffset = g.uncertainty,
-                                     .progress = [](double done) {
-                                       std::fprintf(stderr, "reference AO: %3.0f%%\n", 100.0 * done);
-                                     }};
-  return render::referenceAmbientOcclusion(scene, nullptr, float(frameNumber) * scene.water.frameTime, g.position,
-                                           g.normal, frame.width, frame.height, options);
-}
 
 // The CPU reference of the frame; the water is still simulated on the GPU,
 // exactly as the renderer simulates it.
@@ -107,10 +44,38 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   addSceneOptions(cmd, o.scene);
   cmd->add_option("--width", o.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxFrameSide));
   cmd->add_option("--height", o.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, kMaxFrameSide));
-  cmd->add_option("--frame", o.frame, "Frame number: the water after N frames of water.frame_time from the scene's start")
+  auto* frame = cmd->add_option("--frame", o.frame,
+                                 "Frame number: the water after N frames of water.frame_time from the scene's start")
+                    ->capture_default_str();
+  auto* frames =
+      cmd->add_option("--frames", o.frames,
+                      "Render the frames A to B (A-B, both included), each to --out with its #### replaced by the "
+                      "frame number (e.g. frames/shot.####.exr; --png likewise), with progress (a bar on a "
+                      "terminal, a line per frame otherwise); SIGINT or SIGTERM stop it after the frame being "
+                      "written (exit 130 or 143)")
+          ->type_name("A-B")
+          ->excludes(frame);
+  cmd->add_option("--checkpoint-every", o.checkpointEvery,
+                  "With --frames: save the water's state after every frame that is a multiple of K, in "
+                  "--checkpoint-dir")
+      ->type_name("K")
+      ->check(CLI::Range(1u, 1000000u))
+      ->needs(frames);
+  cmd->add_option("--checkpoint-dir", o.checkpointDir,
+                  "With --frames: where checkpoints are saved (water.NNNNNN.exr in `sim`'s format, and .json); a "
+                  "range starts from the latest one at or before its first frame to render, so any range can run "
+                  "on its own machine")
+      ->type_name("DIR")
+      ->needs(frames);
+  cmd->add_flag("--resume", o.resume,
+                "With --frames: leave out the frames whose files are already there and whole (a run stopped or "
+                "split goes on where it ended)")
+      ->needs(frames);
+  cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file); with --frames, a pattern with ####")
+      ->type_name("PATH")
       ->capture_default_str();
-  cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file)")->type_name("PATH")->capture_default_str();
-  cmd->add_option("--png", o.png, "Also write a tonemapped sRGB PNG preview here")->type_name("PATH");
+  cmd->add_option("--png", o.png, "Also write a tonemapped sRGB PNG preview here; with --frames, a pattern with ####")
+      ->type_name("PATH");
   auto* half = cmd->add_flag("--half", o.halfOutput, "Write 16-bit half EXR channels (default)");
   auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
   half->excludes(full);
@@ -131,7 +96,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")
-      ->excludes(profile);
+      ->excludes(profile)
+      ->excludes(frames);
+  profile->excludes(frames);
   cmd->add_option("--samples", o.samples, "Samples per pixel of --reference")
       ->capture_default_str()
       ->check(CLI::Range(1u, 65536u));
@@ -140,6 +107,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
 
 int runRender(const RenderOptions& o) {
   checkFramePixels(o.width, o.height);
+  if (!o.frames.empty()) return runRenderSequence(o);
   // Check every output before any work, so a bad path costs nothing and leaves nothing.
   io::requireExtension(o.out, ".exr");
   io::checkWritable(o.out);
@@ -163,21 +131,10 @@ int runRender(const RenderOptions& o) {
     render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs, .skipping = !o.noSkip});
     frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs, .ao = aoAovs});
   }
-  std::vector<float> aoRaw, aoRef;
-  if (wants(o.aovs, "ao_raw")) aoRaw = toFrameSize(frame.aoRaw, frame.aoWidth, frame.aoHeight, frame.width, frame.height);
-  if (wants(o.aovs, "ao_ref")) aoRef = referenceAo(scene, frame, o.frame);
-
-  io::FloatImage image = withAovs(frame, o.aovs, aoRaw, aoRef);
-  std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
-  if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
-  io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
-  io::writeExr(o.out, image, types, attributes);
+  writeFrame(o, scene, frame, o.frame, o.out, o.png);
   std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height, o.floatOutput ? "float" : "half",
               o.reference ? "the CPU (reference)" : session.context().deviceName().c_str());
-  if (!o.png.empty()) {
-    io::writePng(o.png, frame.width, frame.height, frame.srgb);
-    std::printf("wrote %s\n", o.png.c_str());
-  }
+  if (!o.png.empty()) std::printf("wrote %s\n", o.png.c_str());
   if (o.profile) printProfile(frame);
   return session.finish();
 }

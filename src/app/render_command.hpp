@@ -23,6 +23,10 @@ struct RenderOptions {
   std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
   bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
   uint32_t samples = 64;          // per pixel, with --reference
+  std::string frames;             // a range A-B: render each frame to the --out (and --png) pattern
+  uint32_t checkpointEvery = 0;   // with frames: save the water every K frames in checkpointDir
+  std::string checkpointDir;      // with frames: where checkpoints are saved and resumed from
+  bool resume = false;            // with frames: leave out the frames whose files exist and are whole
 };
 
 // Adds `tidepool render` and its options to the command line.

@@ -479,6 +479,38 @@ sim::WaterState Renderer::waterState() const {
   return res_->water->download();
 }
 
+WaterCheckpoint Renderer::checkpoint() const {
+  if (!res_->water) throw std::runtime_error("the scene has no water");
+  if (res_->clock.frameBase != 0 || res_->clock.stepBase != 0) {
+    throw std::runtime_error("a water whose dynamics changed on the way cannot be checkpointed");
+  }
+  return WaterCheckpoint{res_->clock.frameAt(res_->stepsDone), waterState(), res_->sleep.quietFrames(),
+                         res_->sleep.asleep()};
+}
+
+void Renderer::resume(const WaterCheckpoint& checkpoint) {
+  if (!res_->water) throw std::runtime_error("the scene has no water");
+  if (checkpoint.state.n != scene_.water.grid) {
+    throw std::runtime_error("a checkpoint of a " + std::to_string(checkpoint.state.n) + "x" +
+                             std::to_string(checkpoint.state.n) + " water for a scene whose water.grid is " +
+                             std::to_string(scene_.water.grid));
+  }
+  res_->water->reset(checkpoint.state);
+  for (ResourceRef state : res_->waterStateRefs) res_->graph.touch(state);  // uploaded outside the graph
+  res_->clock = WaterClock{.substeps = res_->clock.substeps};
+  res_->stepsDone = res_->clock.stepsAt(checkpoint.frame);
+  res_->pendingSteps = 0;
+  res_->pendingDrops.clear();
+  res_->pendingMoves.clear();
+  const auto& drops = scene_.water.drops;
+  res_->dropsApplied.resize(drops.size());
+  for (size_t i = 0; i < drops.size(); ++i) res_->dropsApplied[i] = drops[i].frame <= checkpoint.frame;
+  const sim::WaterStats stats = res_->water->stats(waterStep(scene_.water));
+  res_->restartWater(scene_, stats);
+  res_->sleep.resume(checkpoint.quietFrames, checkpoint.asleep);
+  res_->waterEnergy = stats.energy / (double(scene_.water.extent) * scene_.water.extent);
+}
+
 RenderedFrame Renderer::render(const FrameRequest& request) {
   RenderedFrame out;
   out.width = width_;

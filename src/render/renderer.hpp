@@ -19,6 +19,18 @@ struct FrameRequest {
   bool ao = false;    // read back the AO and the G-buffer it came from (needs a scene with AO on)
 };
 
+// What a renderer's next frames depend on besides its scene: the water as it
+// stands after the last frame rendered, and the sleep rule's count. A
+// renderer of the same scene that resumes from it renders the frames after
+// `frame` to the bit, as the one it came from would have (render --frames
+// A-B --checkpoint-every K: a range can start on another machine).
+struct WaterCheckpoint {
+  uint32_t frame = 0;  // the frame the water has reached
+  sim::WaterState state;
+  uint32_t quietFrames = 0;
+  bool asleep = false;
+};
+
 struct RendererOptions {
   bool aovs = false;  // make the targets and the pass for arbitrary output variables
   // Leave out what a frame does not need: the G-buffer without AO, the camera
@@ -109,6 +121,15 @@ class Renderer {
   void setWaterDynamics(const scene::Water& water);
   // The water's state now, downloaded. Throws without water.
   sim::WaterState waterState() const;
+  // The checkpoint of the water as it stands. Throws without water, and
+  // after setWaterDynamics (a scene file cannot say when the change came).
+  WaterCheckpoint checkpoint() const;
+  // Puts the water where the checkpoint says, as if this renderer had
+  // rendered up to its frame: the drops up to it count as applied, pending
+  // drops and moves are dropped. The scene must be the one the checkpoint
+  // was taken from (the caller's to check). Throws without water or on a
+  // state of another grid size.
+  void resume(const WaterCheckpoint& checkpoint);
 
  private:
   struct Resources;

@@ -35,6 +35,13 @@ class WaterSleep {
   // The energy per unit area of a simulated frame's water.
   void observe(double energyPerArea);
   bool asleep() const { return asleep_; }
+  // Its count of quiet frames in a row: with asleep(), what a checkpoint
+  // keeps (Renderer::checkpoint) and resume() puts back.
+  uint32_t quietFrames() const { return quiet_; }
+  void resume(uint32_t quietFrames, bool asleep) {
+    quiet_ = quietFrames;
+    asleep_ = asleep;
+  }
 
  private:
   SleepRule rule_;
