@@ -67,10 +67,8 @@ int runBenchSim(const BenchSimOptions& o) {
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   for (unsigned n : o.sizes) {
-    const vk::DeviceSize bytes = vk::DeviceSize(n) * n * sizeof(shader::WaterCell);
-    if (n < 16 || bytes > ctx.limits().maxStorageBufferRange) {
-      throw std::runtime_error("bench grid " + std::to_string(n) + " is outside 16.." +
-                               std::to_string(unsigned(std::sqrt(ctx.limits().maxStorageBufferRange / 16.0))) +
+    if (n < 16 || n > sim::maxGrid(ctx)) {
+      throw std::runtime_error("bench grid " + std::to_string(n) + " is outside 16.." + std::to_string(sim::maxGrid(ctx)) +
                                " on " + ctx.deviceName());
     }
   }

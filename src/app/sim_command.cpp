@@ -69,22 +69,14 @@ int runSim(const CLI::App& command, const SimOptions& o) {
 
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
-  auto checkFits = [&](uint32_t n) {
-    const uint64_t bytes = uint64_t(n) * n * sizeof(shader::WaterCell);
-    if (bytes > ctx.limits().maxStorageBufferRange) {
-      throw std::runtime_error("grid " + std::to_string(n) + " needs " + std::to_string(bytes) +
-                               " bytes of state, over the storage buffer limit of " +
-                               std::to_string(ctx.limits().maxStorageBufferRange) + " bytes on " + ctx.deviceName());
-    }
-  };
-  if (params.n != 0) checkFits(params.n);
+  if (params.n != 0) sim::checkGridFits(ctx, params.n);
 
   sim::WaterState initial;
   if (fromFile) {
     initial = sim::initialState(o.init, params, 0.0);  // taken as it is: the step size does not enter
     params.n = initial.n;
     sim::validate(params);
-    checkFits(params.n);
+    sim::checkGridFits(ctx, params.n);
   }
   // The time step: given, or the fewest substeps of a frame within the margin.
   const bool givenStep = command.count("--dt") > 0;

@@ -78,6 +78,7 @@ struct Renderer::Resources {
     graph.setCaching(skipping);
     uniformsRef = graph.buffer("frame uniforms", uniforms);
     if (scene.water.enabled) {
+      sim::checkGridFits(ctx, scene.water.grid);  // before the initial state is made on the CPU
       // Steps only the tiles within reach of motion (sim/water_tiles.hpp), the
       // same bits as the whole grid; with skipping off, every tile.
       water.emplace(ctx, render::waterParams(scene.water), waterInitialState(scene.water), sim::StepKernel::ActiveTiles);

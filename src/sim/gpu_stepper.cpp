@@ -47,6 +47,19 @@ WaterParams withGrid(WaterParams p, uint32_t n) {
 
 }  // namespace
 
+uint32_t maxGrid(const gpu::Context& ctx) {
+  return uint32_t(std::sqrt(double(ctx.limits().maxStorageBufferRange) / sizeof(shader::WaterCell)));
+}
+
+void checkGridFits(const gpu::Context& ctx, uint32_t n) {
+  if (n <= maxGrid(ctx)) return;
+  const uint64_t bytes = uint64_t(n) * n * sizeof(shader::WaterCell);
+  throw std::runtime_error("grid " + std::to_string(n) + " needs " + std::to_string(bytes) +
+                           " bytes of state, over the storage buffer limit of " +
+                           std::to_string(ctx.limits().maxStorageBufferRange) + " bytes on " + ctx.deviceName() +
+                           " (at most " + std::to_string(maxGrid(ctx)) + ")");
+}
+
 GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
                        StepKernel kernel, uint32_t halo)
     : ctx_(ctx), params_(withGrid(params, initial.n)), kernel_(kernel), halo_(halo),
@@ -54,6 +67,7 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   if (halo < 1 || halo > kMaxHalo) {
     throw std::runtime_error("tiled water halo " + std::to_string(halo) + " is outside 1.." + std::to_string(kMaxHalo));
   }
+  checkGridFits(ctx, initial.n);
   const uint32_t n = params_.n;
   stepOne_ = gpu::createComputePipeline(ctx, "water_step.comp", sizeof(shader::WaterStepParams));
   stepTiled_ = gpu::createComputePipeline(ctx, "water_step_tiled.comp", sizeof(shader::WaterStepParams),

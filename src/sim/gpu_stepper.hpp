@@ -28,6 +28,12 @@ enum class TileDispatch { Auto, Full, Active };
 // The water on the GPU: two state buffers (ping-pong) and the compute passes
 // that step, disturb and measure it. record*() add commands with the exact
 // compute-to-compute barriers between them; the plain methods submit and wait.
+// The largest grid side whose state fits one storage buffer on the device.
+uint32_t maxGrid(const gpu::Context& ctx);
+// Throws one line naming the grid, the bytes it needs and the device's limit
+// when an n x n state does not fit one storage buffer.
+void checkGridFits(const gpu::Context& ctx, uint32_t n);
+
 class GpuStepper {
  public:
   static constexpr uint32_t kMaxHalo = 15;  // the tiled shader's 32-cell tile keeps an inner tile of 2
