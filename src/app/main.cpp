@@ -8,6 +8,7 @@
 #include "app/render_command.hpp"
 #include "app/sim_command.hpp"
 #include "app/view_command.hpp"
+#include "gpu/vulkan.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
     if (exporter->parsed()) return tp::app::runExport(exportOptions);
     if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
     if (view->parsed()) return tp::app::runView(viewOptions);
+  } catch (const vk::DeviceLostError& e) {
+    // Lost outside a wait that says what it was doing (a present, a read of timestamps).
+    std::fprintf(stderr, "tidepool: error: the GPU device was lost (VK_ERROR_DEVICE_LOST) in %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tidepool: error: %s\n", e.what());
     return 1;

@@ -1,5 +1,7 @@
 #include "gpu/memory.hpp"
 
+#include "gpu/fault_injection.hpp"
+
 #include <optional>
 #include <stdexcept>
 
@@ -41,11 +43,15 @@ vk::raii::DeviceMemory allocateMemory(const Context& ctx, const vk::MemoryRequir
   if (!type) type = findMemoryType(props, requirements.memoryTypeBits, {});
   if (!type) throw std::runtime_error("no memory type can hold " + what);
   try {
+    if (injectedFault() == Fault::OutOfDeviceMemory && requirements.size >= kInjectedOutOfMemoryBytes) {
+      throw vk::OutOfDeviceMemoryError("vkAllocateMemory (TIDEPOOL_INJECT_FAULT)");
+    }
     return vk::raii::DeviceMemory(ctx.device(),
                                   vk::MemoryAllocateInfo{.allocationSize = requirements.size, .memoryTypeIndex = *type});
   } catch (const vk::OutOfDeviceMemoryError&) {
-    throw std::runtime_error("out of device memory allocating " + std::to_string(requirements.size) + " bytes for " +
-                             what);
+    throw std::runtime_error("out of device memory (VK_ERROR_OUT_OF_DEVICE_MEMORY) allocating " +
+                             std::to_string(requirements.size) + " bytes for " + what + " on " + ctx.deviceName() +
+                             ": try a smaller image or water grid");
   } catch (const vk::OutOfHostMemoryError&) {
     throw std::runtime_error("out of host memory allocating " + std::to_string(requirements.size) + " bytes for " +
                              what);

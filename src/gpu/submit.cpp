@@ -1,5 +1,7 @@
 #include "gpu/submit.hpp"
 
+#include "gpu/fault_injection.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -26,8 +28,10 @@ void submitAndWait(const Context& ctx, const std::function<void(const vk::raii::
     if (ctx.device().waitForFences(*fence, VK_TRUE, kTimeoutNs) == vk::Result::eTimeout) {
       throw std::runtime_error(std::string(what) + " did not finish within 600 s on " + ctx.deviceName());
     }
+    if (injectedFault() == Fault::DeviceLost) throw vk::DeviceLostError("vkWaitForFences (TIDEPOOL_INJECT_FAULT)");
   } catch (const vk::DeviceLostError&) {
-    throw std::runtime_error(std::string("the GPU device was lost during ") + what + " on " + ctx.deviceName());
+    throw std::runtime_error(std::string("the GPU device was lost (VK_ERROR_DEVICE_LOST) during ") + what + " on " +
+                             ctx.deviceName() + ": the driver reset it or it hung; no further output was written");
   }
 }
 
