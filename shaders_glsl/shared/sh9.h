@@ -48,7 +48,8 @@ TP_INLINE float sh9Basis(uint i, vec3 d) {
 TP_INLINE uint sh9Band(uint i) { return i == 0u ? 0u : (i < 4u ? 1u : 2u); }
 
 // Irradiance on a surface with unit normal n: the radiance's coefficients
-// convolved with the clamped cosine.
+// convolved with the clamped cosine; clamped at 0, where the truncated series
+// of a peaked sky (a sun in an image) rings below it facing away from the peak.
 TP_INLINE vec3 sh9Irradiance(Sh9 sh, vec3 n) {
   vec3 e = vec3(0.0f);
   for (uint i = 0u; i < 9u; ++i) {

@@ -1,11 +1,14 @@
 #include "app/bench_ibl.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/packing.hpp>
+#include <stdexcept>
+#include <string>
 
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
@@ -37,16 +40,6 @@ render::SkyImage proceduralSky(const scene::Sky& sky, uint32_t width) {
   return image;
 }
 
-std::vector<glm::vec3> spreadNormals(int n) {
-  std::vector<glm::vec3> normals;
-  for (int k = 0; k < n; ++k) {
-    const float y = 1.0f - 2.0f * (k + 0.5f) / n, r = std::sqrt(1.0f - y * y);
-    const float phi = 2.399963229728653f * k;  // the golden angle: a Fibonacci spiral
-    normals.emplace_back(r * std::cos(phi), y, r * std::sin(phi));
-  }
-  return normals;
-}
-
 // The worst irradiance error over the normals, relative to the brightest normal's irradiance.
 double irradianceError(const shader::Sh9& estimate, const shader::Sh9& exact, const std::vector<glm::vec3>& normals) {
   double worst = 0.0, peak = 0.0;
@@ -68,13 +61,17 @@ struct Row {
 
 int runBenchIbl(const BenchIblOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
-  if (o.width < 16 || o.width > 8192 || o.width % 2) throw std::runtime_error("bench ibl: --width must be even, 16 to 8192");
+  if (o.width < 16 || o.width > 8192 || o.width % 2) {
+    throw std::runtime_error("bench ibl: --width " + std::to_string(o.width) + " is not even and 16 to 8192");
+  }
   const scene::Scene s = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   const render::SkyImage image = proceduralSky(s.sky, o.width);
+  const auto start = std::chrono::steady_clock::now();
   const shader::Sh9 exact = render::projectSh9(image, glm::pi<float>());
-  const std::vector<glm::vec3> normals = spreadNormals(100);
+  const double projectionMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const std::vector<glm::vec3> normals = render::spiralNormals(100);
   const gpu::Image texture = render::uploadSkyImage(ctx, image, "bench environment");
   const vk::raii::Sampler sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
                                                                       .minFilter = vk::Filter::eNearest});
@@ -118,13 +115,14 @@ int runBenchIbl(const BenchIblOptions& o) {
 
   io::AtomicFile csvFile(o.csv);
   std::ofstream csv(csvFile.tempPath());
-  csv << "sampling,samples,sh_ms,cdf_ms,rms_error,width,height,rotations,device\n";
-  std::printf("environment %ux%u, CDF build %.3f ms\n", image.width, image.height, cdfMs);
+  csv << "sampling,samples,sh_ms,cdf_ms,rms_error,projection_cpu_ms,width,height,rotations,device\n";
+  std::printf("environment %ux%u, CDF build %.3f ms (GPU), exact SH9 projection %.1f ms (CPU, one thread)\n", image.width,
+              image.height, cdfMs, projectionMs);
   std::printf("%-11s %8s %9s %11s\n", "sampling", "samples", "SH ms", "RMS error");
   for (const Row& r : rows) {
     std::printf("%-11s %8u %9.3f %11.3e\n", r.sampling, r.samples, r.shMs, r.rmsError);
     csv << r.sampling << "," << r.samples << "," << formatNumber("%.6g", r.shMs) << "," << formatNumber("%.6g", cdfMs)
-        << "," << formatNumber("%.6g", r.rmsError) << "," << image.width << "," << image.height << "," << o.rotations
+        << "," << formatNumber("%.6g", r.rmsError) << "," << formatNumber("%.4g", projectionMs) << "," << image.width << "," << image.height << "," << o.rotations
         << ",\"" << ctx.deviceName() << "\"\n";
   }
   commitBenchCsv(csvFile, csv, "plot_bench_ibl.py", o.plot);

@@ -23,7 +23,7 @@ struct BenchIblOptions {
 // CDFs) or uniformly over the sphere: GPU ms of the estimate and of the CDF
 // build against the error of the irradiance from the exact texel-by-texel
 // projection (worst over 100 normals, relative to the brightest, RMS over
-// the rotations). A table, CSV and a plot.
+// the rotations); and the CPU ms of that exact projection. A table, CSV and a plot.
 int runBenchIbl(const BenchIblOptions& options);
 
 }  // namespace tp::app

@@ -76,31 +76,35 @@ shader::Sh9 projectSh9(const SkyImage& image, float maxTheta) {
   return sh;
 }
 
-glm::vec2 rotatedHammersley(uint32_t k, uint32_t n, glm::vec2 rotation) {
-  return shader::envHammersley(k, n, rotation);
+namespace {
+
+// Calls visit(direction, radiance / density) for each of the n directions.
+template <typename Visit>
+void forEachSample(const SkyImage& image, const EnvSampler& sampler, EnvSampling kind, uint32_t n, glm::vec2 rotation,
+                   Visit visit) {
+  for (uint32_t k = 0; k < n; ++k) {
+    const glm::vec2 xi = shader::envHammersley(k, n, rotation);
+    EnvSample s;
+    if (kind == EnvSampling::Importance) {
+      s = sampler.sample(xi);
+    } else {
+      const glm::vec3 d = shader::envUniformDirection(xi);
+      s = {d, 1.0f / (4.0f * glm::pi<float>()), sampler.texelOf(d)};
+    }
+    // The texel the sample was drawn in: its radiance is the one the density follows.
+    const glm::vec3 radiance(image.texels[size_t(s.texel.y) * image.width + s.texel.x]);
+    visit(s.direction, glm::dvec3(radiance) / double(s.pdf));
+  }
 }
 
-EnvSample drawDirection(const EnvSampler& sampler, EnvSampling kind, glm::vec2 xi) {
-  if (kind == EnvSampling::Importance) return sampler.sample(xi);
-  const glm::vec3 d = shader::envUniformDirection(xi);
-  return {d, 1.0f / (4.0f * glm::pi<float>()), sampler.texelOf(d)};
-}
-
-glm::vec3 texelRadiance(const SkyImage& image, glm::vec3 d) {
-  const glm::uvec2 t = equirectTexel(d, image.width, image.height);
-  return glm::vec3(image.texels[size_t(t.y) * image.width + t.x]);
-}
+}  // namespace
 
 shader::Sh9 estimateSh9(const SkyImage& image, const EnvSampler& sampler, EnvSampling kind, uint32_t n,
                         glm::vec2 rotation) {
   glm::dvec3 c[9] = {};
-  for (uint32_t k = 0; k < n; ++k) {
-    const EnvSample s = drawDirection(sampler, kind, rotatedHammersley(k, n, rotation));
-    // The texel the sample was drawn in: its radiance is the one the density follows.
-    const glm::dvec3 weight =
-        glm::dvec3(glm::vec3(image.texels[size_t(s.texel.y) * image.width + s.texel.x])) / double(s.pdf);
-    for (uint32_t i = 0; i < 9; ++i) c[i] += weight * double(shader::sh9Basis(i, s.direction));
-  }
+  forEachSample(image, sampler, kind, n, rotation, [&](glm::vec3 d, glm::dvec3 weight) {
+    for (uint32_t i = 0; i < 9; ++i) c[i] += weight * double(shader::sh9Basis(i, d));
+  });
   shader::Sh9 sh{};
   for (int i = 0; i < 9; ++i) sh.c[i] = glm::vec4(glm::vec3(c[i] / double(n)), 0.0f);
   return sh;
@@ -109,14 +113,20 @@ shader::Sh9 estimateSh9(const SkyImage& image, const EnvSampler& sampler, EnvSam
 glm::vec3 estimateIrradiance(const SkyImage& image, const EnvSampler& sampler, EnvSampling kind, uint32_t n,
                              glm::vec2 rotation, glm::vec3 normal) {
   glm::dvec3 sum(0.0);
-  for (uint32_t k = 0; k < n; ++k) {
-    const EnvSample s = drawDirection(sampler, kind, rotatedHammersley(k, n, rotation));
-    const float cosine = glm::dot(s.direction, normal);
-    if (cosine <= 0.0f) continue;
-    sum += glm::dvec3(glm::vec3(image.texels[size_t(s.texel.y) * image.width + s.texel.x])) * double(cosine) /
-           double(s.pdf);
-  }
+  forEachSample(image, sampler, kind, n, rotation, [&](glm::vec3 d, glm::dvec3 weight) {
+    sum += weight * double(std::max(glm::dot(d, normal), 0.0f));
+  });
   return glm::vec3(sum / double(n));
+}
+
+std::vector<glm::vec3> spiralNormals(int n) {
+  std::vector<glm::vec3> normals;
+  for (int k = 0; k < n; ++k) {
+    const float y = 1.0f - 2.0f * (k + 0.5f) / n, r = std::sqrt(1.0f - y * y);
+    const float phi = 2.399963229728653f * k;  // the golden angle
+    normals.emplace_back(r * std::cos(phi), y, r * std::sin(phi));
+  }
+  return normals;
 }
 
 }  // namespace tp::render
