@@ -48,10 +48,24 @@ glm::vec3 pixel(const render::RenderedFrame& f, uint32_t x, uint32_t y) {
 
 using RenderTest = GpuTest;
 
+// The sky above the horizon of radiance L lights a surface tilted to normal n
+// with pi L (1 + n.y) / 2 (the upper hemisphere's part that n sees): pi L
+// facing up, half of it sideways, none facing down. The SH9 projection holds
+// this exactly (the step's band-2 coefficients vanish); what is left is the
+// midpoint rule's error in theta (128 steps: about dtheta^2 / 24 = 6e-6).
 TEST_F(RenderTest, SkyIrradianceOfAUniformSkyIsPiTimesItsRadiance) {
   auto s = uniformSkyScene();
-  glm::vec3 e = render::skyIrradianceUp(s.sky);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], glm::pi<float>() * s.sky.zenith[c], 1e-4f * e[c]);
+  const shader::Sh9 sh = render::skySh9(s.sky);
+  const glm::vec3 normals[] = {{0.0f, 1.0f, 0.0f},  {1.0f, 0.0f, 0.0f},   {0.0f, 0.0f, -1.0f},
+                               {0.0f, -1.0f, 0.0f}, glm::normalize(glm::vec3(0.3f, 0.8f, -0.5f)),
+                               glm::normalize(glm::vec3(-0.6f, -0.2f, 0.7f))};
+  for (const glm::vec3& n : normals) {
+    const glm::vec3 e = shader::sh9Irradiance(sh, n);
+    for (int c = 0; c < 3; ++c) {
+      const float expected = glm::pi<float>() * s.sky.zenith[c] * 0.5f * (1.0f + n.y);
+      EXPECT_NEAR(e[c], expected, 1e-4f * glm::pi<float>() * s.sky.zenith[c]) << n.x << "," << n.y << "," << n.z;
+    }
+  }
 }
 
 TEST_F(RenderTest, GroundIsLambertianUnderSunAndUniformSky) {
@@ -218,7 +232,8 @@ TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
   const auto sky = render::skyParams(s.sky);
   const float ior = s.water.ior;
   const float f0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
-  const glm::vec3 irradiance = glm::vec3(u.sunIrradiance) * std::max(u.sunDirection.y, 0.0f) + glm::vec3(u.skyIrradiance);
+  const glm::vec3 irradiance = glm::vec3(u.sunIrradiance) * std::max(u.sunDirection.y, 0.0f) +
+                              shader::sh9Irradiance(u.skySh, glm::vec3(0.0f, 1.0f, 0.0f));
   const float half = 0.5f * s.water.extent;
   const float floorY = s.ground.height - s.pool.depth;
   auto parityAt = [&](glm::vec2 xz, bool& nearEdge) {
@@ -475,8 +490,11 @@ TEST_F(SkyImageTest, ConstantSkyImageLightsTheGroundExactly) {
       const glm::vec3 d = pixelRay(u, x, y);
       const glm::vec3 got = pixel(frame, x, y);
       if (d.y < -0.05f) {
-        // The midpoint rule over 128 rows integrates cos(theta) sin(theta) to 5e-5.
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], s.ground.albedoA[c] * radiance[c], 2e-4f) << x << "," << y;
+        // The image's SH9 projection is exact texel by texel (render/env_sh.hpp)
+        // and holds the upper hemisphere's irradiance exactly: float round-off.
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_NEAR(got[c], s.ground.albedoA[c] * radiance[c], 1e-5f * radiance[c]) << x << "," << y;
+        }
         ++ground;
       } else if (d.y > 0.05f) {
         for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], radiance[c], 1e-3f * radiance[c]) << x << "," << y;  // half texels

@@ -179,4 +179,26 @@ TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   }
 }
 
+// Two samplings times two sample counts: four rows. Bad widths, sample
+// counts and paths: one clean line, nothing written.
+TEST(BenchCli, IblBenchmarkWritesItsTableAndRefusesBadInput) {
+  ScratchDir dir;
+  const std::string csv = dir.file("ibl.csv");
+  ProcessResult r = runTidepool(
+      "bench ibl --validate --width 64 --samples 16,64 --rotations 2 --repeats 1 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("sampling,samples,sh_ms,cdf_ms,rms_error,", 0), 0u) << table.header;
+  EXPECT_EQ(table.rows, 2 * 2);
+  ScratchDir bad;
+  for (const char* width : {"15", "17", "9000"}) {
+    const std::string error =
+        expectCleanFailure(std::string("bench ibl --width ") + width + " --csv " + bad.file("x.csv"), bad, {});
+    EXPECT_NE(error.find(width), std::string::npos) << error;
+  }
+  expectCleanFailure("bench ibl --samples 0 --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench ibl --csv /nonexistent/dir/x.csv", bad, {});
+}
+
 }  // namespace tp::test

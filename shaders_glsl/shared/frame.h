@@ -3,6 +3,7 @@
 #ifndef TP_SHARED_FRAME_H
 #define TP_SHARED_FRAME_H
 #include "shared/interop.h"
+#include "shared/sh9.h"
 
 TP_BEGIN
 
@@ -14,15 +15,15 @@ struct FrameUniforms {
   vec4 cameraPosition;         // xyz world position
   vec4 sunDirection;           // xyz unit vector towards the sun
   vec4 sunIrradiance;          // rgb irradiance of the sun disk on a surface facing it
-  vec4 skyIrradiance;          // rgb irradiance of the sky (without sun) on an up-facing surface
   vec4 viewport;               // width, height, 1/width, 1/height
   mat4 inverseProjection;      // clip to camera: view-space positions from the depth buffer
+  Sh9 skySh;                   // the sky's radiance above the horizon (without sun), for its irradiance (sh9.h)
 };
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 4 * 16 + 144);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

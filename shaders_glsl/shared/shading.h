@@ -1,11 +1,12 @@
 // The local shading of every surface (Lambertian, lit by the sun without
-// shadows and by the sky's irradiance), the equirectangular mapping and the
+// shadows and by the sky's irradiance) and the
 // cast of the water's refracted rays against the pool,
 // compiled both as GLSL and as C++: the raster passes and the CPU reference (render/reference_*) shade
 // with the same functions, so that their difference measures only the paths
 // the light takes.
 #ifndef TP_SHARED_SHADING_H
 #define TP_SHARED_SHADING_H
+#include "shared/equirect.h"
 #include "shared/frame.h"
 #include "shared/ground.h"
 #include "shared/interop.h"
@@ -13,20 +14,6 @@
 #include "shared/water_surface.h"
 
 TP_BEGIN
-
-const float kPi = 3.14159265358979323846f;
-
-// Equirectangular mapping: u = phi / 2pi + 1/2 with phi = atan(z, x), v = theta / pi
-// with theta = acos(y), the original course project's convention.
-TP_INLINE vec2 directionToEquirect(vec3 d) {
-  return vec2(atan(d.z, d.x) / (2.0f * kPi) + 0.5f, acos(clamp(d.y, -1.0f, 1.0f)) / kPi);
-}
-
-TP_INLINE vec3 equirectToDirection(vec2 uv) {
-  float phi = (uv.x - 0.5f) * 2.0f * kPi;
-  float theta = uv.y * kPi;
-  return vec3(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
-}
 
 // Integral from 0 to x of the square wave that is +1 on [0,1) and -1 on [1,2), period 2.
 TP_INLINE vec2 squareWaveIntegral(vec2 x) {
@@ -50,14 +37,14 @@ TP_INLINE float filteredChecker(vec2 p, vec2 w) {
 
 // Radiance leaving the checkered ground at world xz (pixel footprint in
 // metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
-// the caustics under water, 1 in the open) and by the sky's irradiance on an
-// up-facing surface.
+// the caustics under water, 1 in the open) and by the sky's irradiance on a
+// surface with normal n (the sky above the horizon: the ground hides the rest).
 TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
   vec2 p = xz / ground.plane.z;
   float odd = filteredChecker(p, footprint / ground.plane.z);
   vec3 albedo = mix(vec3(ground.albedoA), vec3(ground.albedoB), odd);
   vec3 irradiance =
-      sunScale * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + vec3(frame.skyIrradiance);
+      sunScale * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + sh9Irradiance(frame.skySh, n);
   return albedo / kPi * irradiance;
 }
 
@@ -83,10 +70,11 @@ TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 posi
 // Where the caustics texture, which covers the pool's square, holds world xz.
 TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.box.x) + 0.5f; }
 
-// The walls see half the sky.
+// The walls see the sky above the horizon on their side (half of it, for a
+// uniform sky); the pool's own rim is not counted.
 TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
-                    0.5f * vec3(frame.skyIrradiance);
+                    sh9Irradiance(frame.skySh, normal);
   return vec3(pool.wallAlbedo) / kPi * irradiance;
 }
 
@@ -175,11 +163,11 @@ TP_INLINE vec3 viewTransmittance(CameraMedium medium, vec3 camera, vec3 p) {
   return exp(-vec3(medium.absorption) * distance(camera, p));
 }
 
-// Lambertian objects (spheres and boxes): the sky's irradiance scaled for the
-// part of the sky a tilted surface sees (1/2 (1 + n.y)).
+// Lambertian objects (spheres and boxes): the sky above the horizon seen
+// from the normal (pi L (1 + n.y) / 2 for a uniform sky L).
 TP_INLINE vec3 objectRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
-                    0.5f * (1.0f + n.y) * vec3(frame.skyIrradiance);
+                    sh9Irradiance(frame.skySh, n);
   return albedo / kPi * irradiance;
 }
 

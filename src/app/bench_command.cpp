@@ -76,6 +76,23 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   frame->add_option("--csv", o.frame.csv, "CSV output")->type_name("PATH")->capture_default_str();
   frame->add_option("--plot", o.frame.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   addGpuOptions(frame, o.frame.validate, o.frame.device);
+  CLI::App* ibl = bench->add_subcommand(
+      "ibl", "Sky irradiance (SH9) by importance and by uniform sampling: samples against error against GPU ms");
+  ibl->add_option("--scene", o.ibl.scenePath, "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  ibl->add_option("--width", o.ibl.width, "Environment texels across (even; height is half)")->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  ibl->add_option("--samples", o.ibl.samples, "Sample counts to measure")->delimiter(',')->capture_default_str()
+      ->check(CLI::Range(1u, 1u << 22));
+  ibl->add_option("--rotations", o.ibl.rotations, "Independent sample sets per case (errors: RMS over them)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ibl->add_option("--repeats", o.ibl.repeats, "Timed CDF builds; the median is reported")->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ibl->add_option("--csv", o.ibl.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  ibl->add_option("--plot", o.ibl.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(ibl, o.ibl.validate, o.ibl.device);
   return bench;
 }
 
@@ -85,6 +102,7 @@ int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);
+  if (bench->get_subcommand("ibl")->parsed()) return runBenchIbl(o.ibl);
   return 2;
 }
 

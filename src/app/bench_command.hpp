@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_frame.hpp"
+#include "app/bench_ibl.hpp"
 #include "app/bench_sim.hpp"
 #include "app/bench_ssao.hpp"
 #include "app/bench_tiles.hpp"
@@ -15,9 +16,10 @@ struct BenchOptions {
   BenchSsaoOptions ssao;
   BenchTilesOptions tiles;
   BenchFrameOptions frame;
+  BenchIblOptions ibl;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame).
+// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame, ibl).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

@@ -17,9 +17,9 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
   u.sunDirection = glm::vec4(light.sunDirection, 0.0f);
   u.sunIrradiance = glm::vec4(light.sunIrradiance, 0.0f);
-  u.skyIrradiance = glm::vec4(light.skyIrradiance, 0.0f);
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
   u.inverseProjection = glm::inverse(u.projection);
+  u.skySh = light.skySh;
   return u;
 }
 

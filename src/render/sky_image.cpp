@@ -10,6 +10,7 @@
 #include "gpu/barriers.hpp"
 #include "gpu/submit.hpp"
 #include "io/image_io.hpp"
+#include "render/env_sh.hpp"
 #include "shared/shading.h"
 
 namespace tp::render {
@@ -30,21 +31,8 @@ SkyImage loadSkyImage(const std::string& path) {
   return sky;
 }
 
-glm::vec3 skyImageIrradianceUp(const SkyImage& image) {
-  glm::dvec3 sum(0.0);
-  const double dPhi = glm::two_pi<double>() / image.width, dTheta = glm::pi<double>() / image.height;
-  for (uint32_t j = 0; j < image.height; ++j) {
-    const double theta = (j + 0.5) * dTheta;  // v = theta / pi, as shared/shading.h
-    const double cosUp = std::cos(theta);
-    if (cosUp <= 0.0) continue;
-    const double weight = cosUp * std::sin(theta) * dTheta * dPhi;
-    for (uint32_t i = 0; i < image.width; ++i) sum += glm::dvec3(glm::vec3(image.texels[size_t(j) * image.width + i])) * weight;
-  }
-  return glm::vec3(sum);
-}
-
 SkyLight skyImageLight(const SkyImage& image) {
-  return SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), skyImageIrradianceUp(image)};
+  return SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), projectSh9(image, 0.5f * glm::pi<float>())};
 }
 
 glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d) {

@@ -17,11 +17,8 @@ struct SkyImage {
 // Throws one line naming the file: unreadable, fewer than 3 channels, or non-finite texels.
 SkyImage loadSkyImage(const std::string& path);
 
-// Irradiance on an up-facing surface: the image integrated over the upper
-// hemisphere, cosine weighted, each texel's solid angle (2 pi / W)(pi / H) sin(theta).
-glm::vec3 skyImageIrradianceUp(const SkyImage& image);
-
-// The light of a frame under the image: its irradiance alone, no sun.
+// The light of a frame under the image: its radiance above the horizon in
+// SH9 (render/env_sh.hpp, exact for the texels), no sun.
 SkyLight skyImageLight(const SkyImage& image);
 
 // Radiance along unit direction d, bilinear between texel centres, wrapping

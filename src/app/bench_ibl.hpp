@@ -1,0 +1,29 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp::app {
+
+struct BenchIblOptions {
+  std::string scenePath;  // empty: the built-in scene
+  uint32_t width = 1024;  // environment texels across (height: half)
+  std::vector<uint32_t> samples{16, 64, 256, 1024, 4096, 16384, 65536};
+  uint32_t rotations = 8;  // independent sample sets per case (errors: RMS over them)
+  uint32_t repeats = 5;    // timed CDF builds (the median is reported; the SH estimate: over the rotations)
+  std::string csv = "bench_ibl.csv";
+  std::string plot = "bench_ibl.png";
+  bool validate = false;
+  std::string device;
+};
+
+// `tidepool bench ibl`: the scene's procedural sky with its sun as an
+// equirectangular environment; its SH9 irradiance estimated on the GPU
+// (render/env_prefilter) from N samples drawn by importance (the luminance
+// CDFs) or uniformly over the sphere: GPU ms of the estimate and of the CDF
+// build against the error of the irradiance from the exact texel-by-texel
+// projection (worst over 100 normals, relative to the brightest, RMS over
+// the rotations); and the CPU ms of that exact projection. A table, CSV and a plot.
+int runBenchIbl(const BenchIblOptions& options);
+
+}  // namespace tp::app
