@@ -12,7 +12,9 @@ Fault injectedFault() {
     if (!name || !*name) return Fault::None;
     if (std::string(name) == "device-lost") return Fault::DeviceLost;
     if (std::string(name) == "out-of-memory") return Fault::OutOfDeviceMemory;
-    throw std::runtime_error(std::string("TIDEPOOL_INJECT_FAULT=") + name + ": expected device-lost or out-of-memory");
+    if (std::string(name) == "leak") return Fault::Leak;
+    throw std::runtime_error(std::string("TIDEPOOL_INJECT_FAULT=") + name +
+                             ": expected device-lost, out-of-memory or leak");
   }();
   return fault;
 }

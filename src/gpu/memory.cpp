@@ -65,6 +65,10 @@ Buffer createBuffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlag
     throw std::runtime_error(what + " needs " + std::to_string(size) + " bytes, over the device's storage buffer limit of " +
                              std::to_string(ctx.limits().maxStorageBufferRange) + " bytes");
   }
+  if (injectedFault() == Fault::Leak) {
+    (void)(*ctx.device()).createBuffer(vk::BufferCreateInfo{.size = 16, .usage = usage}, nullptr,
+                                       *ctx.device().getDispatcher());
+  }
   Buffer b;
   b.size = size;
   b.buffer = vk::raii::Buffer(ctx.device(), vk::BufferCreateInfo{.size = size, .usage = usage});
