@@ -6,6 +6,7 @@
 // the light takes.
 #ifndef TP_SHARED_SHADING_H
 #define TP_SHARED_SHADING_H
+#include "shared/constants.h"
 #include "shared/frame.h"
 #include "shared/ground.h"
 #include "shared/interop.h"
@@ -13,8 +14,6 @@
 #include "shared/water_surface.h"
 
 TP_BEGIN
-
-const float kPi = 3.14159265358979323846f;
 
 // Equirectangular mapping: u = phi / 2pi + 1/2 with phi = atan(z, x), v = theta / pi
 // with theta = acos(y), the original course project's convention.
@@ -83,11 +82,12 @@ TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 posi
 // Where the caustics texture, which covers the pool's square, holds world xz.
 TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.box.x) + 0.5f; }
 
-// The walls see half the sky.
-TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {
+// The walls see half the sky. `footprint`: the pixel's on the wall, in metres
+// along and down it (0 point-samples the bricks).
+TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
                     0.5f * vec3(frame.skyIrradiance);
-  return vec3(pool.wallAlbedo) / kPi * irradiance;
+  return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi * irradiance;
 }
 
 // Distances along origin + s dir from inside the pool's square to the wall
