@@ -63,7 +63,7 @@ TEST_F(NoiseTest, GpuAndCpuAgreeToTheBit) {
   auto pipeline = gpu::createComputePipeline(ctx(), "test_noise.comp", sizeof(shader::NoiseSampleParams));
   gpu::DescriptorArena arena(ctx());
   for (const Kind& kind : kKinds) {
-    for (const auto [octaves, normalised] : {std::pair{1u, 0u}, std::pair{5u, 0u}, std::pair{5u, 1u}}) {
+    for (const auto& [octaves, normalised] : {std::pair{1u, 0u}, std::pair{5u, 0u}, std::pair{5u, 1u}}) {
       const shader::NoiseSampleParams params{kind.id, 1234u, octaves, 0.5f, count, normalised, 0, 0};
       gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
         gpu::bindPipeline(cmd, pipeline, params);
