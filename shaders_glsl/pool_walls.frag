@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The pool's walls, Lambertian (shared/shading.h), through the water when the camera is under it.
+// The pool's walls (plain or brick, shared/pool.h), Lambertian (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
 #include "lib/gbuffer.glsl"
 
@@ -14,6 +14,7 @@ layout(binding = 3) uniform Medium { CameraMedium medium; };
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(poolWallRadiance(pool, frame, n) * toCamera, 1.0);
-  writeGbuffer(frame, n, poolWallRadiance(pool, withoutSun(frame), n) * toCamera);
+  const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n));
+  color = vec4(poolWallRadiance(pool, frame, worldPosition, n, footprint) * toCamera, 1.0);
+  writeGbuffer(frame, n, poolWallRadiance(pool, withoutSun(frame), worldPosition, n, footprint) * toCamera);
 }

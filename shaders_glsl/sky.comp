@@ -10,8 +10,9 @@ layout(push_constant) uniform Push { SkyParams sky; };
 
 void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
-  if (p.x >= sky.size.x || p.y >= sky.size.y) return;
-  vec2 uv = (vec2(p) + 0.5) / vec2(sky.size.xy);
+  const uvec2 size = uvec2(sky.counts.x, sky.counts.x / 2u);
+  if (p.x >= size.x || p.y >= size.y) return;
+  vec2 uv = (vec2(p) + 0.5) / vec2(size);
   vec3 d = equirectToDirection(uv);
   imageStore(skyImage, ivec2(p), vec4(skyRadiance(sky, d, 1.0), 1.0));
 }

@@ -12,5 +12,7 @@ layout(push_constant) uniform Push { NoiseSampleParams params; };
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= params.count) return;
-  values[i] = fractalNoise(params.kind, points[i], params.seed, params.octaves, params.persistence);
+  values[i] = params.normalised != 0u
+                  ? fractalNoise01(params.kind, points[i], params.seed, params.octaves, params.persistence)
+                  : fractalNoise(params.kind, points[i], params.seed, params.octaves, params.persistence);
 }

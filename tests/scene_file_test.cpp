@@ -60,6 +60,16 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"sky": {"sun_radiance": [1, -1, 1]}})").find("sky.sun_radiance must not be negative"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"render": {"exposure": 0}})").find("render.exposure"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"sky": {"clouds": {"coverage": 1.5}}})").find("sky.clouds.coverage"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"sky": {"clouds": {"noise": "worley"}}})").find("sky.clouds.noise must be one of"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"sky": {"clouds": {"shape": 1}}})").find("sky.clouds.shape: is not a known key"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"wall_pattern": "stone"}})").find("pool.wall_pattern must be one of"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"mortar_fraction": 0.6}})").find("pool.mortar_fraction"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"brick_width": 0.01, "brick_height": 0.1, "mortar_fraction": 0.2}})")
+                .find("must be less than pool.brick_width"),
+            std::string::npos);
 }
 
 TEST(SceneFile, UnreadableFiles) {

@@ -30,7 +30,9 @@ vec3 radianceAbove(vec3 p, vec3 r) {
   const float sWall = min(walls.x, walls.y);
   if (sWall > 0.0 && p.y + sWall * r.y <= pool.box.y) {  // below the rim
     nearest = sWall;
-    radiance = poolWallRadiance(pool, frame, poolWallNormal(walls, r));
+    // The wall's bricks point-sampled, as the reference tracer does: derivatives
+    // are not to be had in this divergent branch.
+    radiance = poolWallRadiance(pool, frame, p + sWall * r, poolWallNormal(walls, r), vec2(0.0));
   }
   const ObjectHit object = castObjects(objects, objects.count.xy, p, r, nearest);
   return object.distance > 0.0 ? objectRadiance(frame, object.albedo, object.normal) : radiance;
@@ -43,7 +45,7 @@ vec3 radianceBelow(vec3 p, vec3 t) {
   const PoolHit hit = tracePool(pool, p, t);
   vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz),
                                                 texture(caustics, causticsUv(pool, hit.position.xz)).r)
-                            : poolWallRadiance(pool, frame, hit.normal);
+                            : poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0));
   float distance = hit.distance;
   const ObjectHit object = castObjects(objects, objects.count.zw, p, t, distance);
   if (object.distance > 0.0) {

@@ -4,11 +4,11 @@
 // shading, the reference tracer and the environment sampler share it.
 #ifndef TP_SHARED_EQUIRECT_H
 #define TP_SHARED_EQUIRECT_H
+#include "shared/constants.h"
 #include "shared/interop.h"
 
 TP_BEGIN
 
-const float kPi = 3.14159265358979323846f;
 
 TP_INLINE vec2 directionToEquirect(vec3 d) {
   return vec2(atan(d.z, d.x) / (2.0f * kPi) + 0.5f, acos(clamp(d.y, -1.0f, 1.0f)) / kPi);

@@ -1,6 +1,6 @@
 // The noise family, one text for C++ and GLSL: an integer hash, value noise
-// (bilinear and cubic), gradient noise (Perlin, quintic fade) and fractal
-// sums. Only integer operations, multiplies, adds and floor, each written so
+// (bilinear and cubic), gradient noise (Perlin, quintic fade), simplex noise
+// and fractal sums. Only integer operations, multiplies, adds and floor, each written so
 // that both languages round the same way: the GPU and the CPU agree to the bit
 // (tests/noise_test.cpp checks it).
 #ifndef TP_SHARED_NOISE_H
@@ -88,13 +88,60 @@ TP_INLINE float gradientNoise(vec2 p, uint seed) {
   return bottom + (top - bottom) * sy;
 }
 
+// Simplex noise (Perlin 2001, in Gustavson's 2D form): the plane cut into
+// equilateral triangles by skewing the square lattice with F2 = (sqrt 3 - 1)/2
+// and back with G2 = (3 - sqrt 3)/6. Each corner of the point's triangle adds
+// (1/2 - r^2)^4 (g . d) with gradientDot's eight gradients; the kernel's
+// radius sqrt(1/2) is the triangle's height, so a corner's kernel ends (with
+// three zero derivatives) on the far edge: continuous, no other corner reaches in.
+const float kSimplexSkew = 0.36602540378443865f;    // F2 = (sqrt(3) - 1) / 2
+const float kSimplexUnskew = 0.21132486540518713f;  // G2 = (3 - sqrt(3)) / 6
+const float kSimplexRadius2 = 0.5f;                 // the kernel's squared radius
+// Scales the sum into [-1, 1]. The largest |sum| over every gradient choice is
+// 2 / (81 sqrt 3) = 0.0142556, at the midpoint of an edge with the diagonal
+// gradient at both ends (t = 1/3, g . d = 1/sqrt 3 each; the third corner's t = 0):
+// a grid search over the triangle finds no larger (tests/noise_test.cpp). So
+// the classic scale 70 bounds simplex noise by 140 / (81 sqrt 3) = 0.99789.
+const float kSimplexScale = 70.0f;
+
+TP_INLINE float simplexCorner(int x, int y, uint seed, float dx, float dy) {
+  TP_PRECISE float t = kSimplexRadius2 - dx * dx - dy * dy;
+  if (t <= 0.0f) return 0.0f;
+  TP_PRECISE float t2 = t * t;
+  TP_PRECISE float weighted = t2 * t2 * gradientDot(x, y, seed, dx, dy);
+  return weighted;
+}
+
+TP_INLINE float simplexNoise(vec2 p, uint seed) {
+  TP_PRECISE float skew = (p.x + p.y) * kSimplexSkew;
+  TP_PRECISE float sx = p.x + skew;
+  TP_PRECISE float sy = p.y + skew;
+  int i = int(floor(sx)), j = int(floor(sy));
+  TP_PRECISE float unskew = float(i + j) * kSimplexUnskew;
+  TP_PRECISE float x0 = p.x - (float(i) - unskew);
+  TP_PRECISE float y0 = p.y - (float(j) - unskew);
+  // The lower (x0 > y0) or upper triangle of the skewed cell.
+  int i1 = x0 > y0 ? 1 : 0;
+  int j1 = 1 - i1;
+  TP_PRECISE float x1 = x0 - float(i1) + kSimplexUnskew;
+  TP_PRECISE float y1 = y0 - float(j1) + kSimplexUnskew;
+  TP_PRECISE float x2 = x0 - 1.0f + 2.0f * kSimplexUnskew;
+  TP_PRECISE float y2 = y0 - 1.0f + 2.0f * kSimplexUnskew;
+  TP_PRECISE float sum = simplexCorner(i, j, seed, x0, y0) + simplexCorner(i + i1, j + j1, seed, x1, y1) +
+                         simplexCorner(i + 1, j + 1, seed, x2, y2);
+  TP_PRECISE float scaled = kSimplexScale * sum;
+  return scaled;
+}
+
 #define TP_NOISE_VALUE_BILINEAR 0u
 #define TP_NOISE_VALUE_CUBIC 1u
 #define TP_NOISE_GRADIENT 2u
+#define TP_NOISE_SIMPLEX 3u
 
 TP_INLINE float noiseOfKind(uint kind, vec2 p, uint seed) {
   if (kind == TP_NOISE_VALUE_BILINEAR) return valueNoiseBilinear(p, seed);
   if (kind == TP_NOISE_VALUE_CUBIC) return valueNoiseCubic(p, seed);
+  if (kind == TP_NOISE_SIMPLEX) return simplexNoise(p, seed);
   return gradientNoise(p, seed);
 }
 
@@ -113,13 +160,28 @@ TP_INLINE float fractalNoise(uint kind, vec2 p, uint seed, uint octaves, float p
   return sum;
 }
 
+// The fractal sum mapped into [0, 1]: divided by the sum of the amplitudes,
+// and the signed kinds (gradient, simplex: [-1, 1]) shifted and halved.
+TP_INLINE float fractalNoise01(uint kind, vec2 p, uint seed, uint octaves, float persistence) {
+  TP_PRECISE float total = 0.0f;
+  TP_PRECISE float amplitude = 1.0f;
+  for (uint i = 0u; i < octaves; ++i) {
+    total += amplitude;
+    amplitude *= persistence;
+  }
+  TP_PRECISE float f = fractalNoise(kind, p, seed, octaves, persistence) / total;
+  if (kind == TP_NOISE_GRADIENT || kind == TP_NOISE_SIMPLEX) f = 0.5f * f + 0.5f;
+  return f;
+}
+
 struct NoiseSampleParams {
   uint kind;         // TP_NOISE_*
   uint seed;
   uint octaves;
   float persistence;
   uint count;        // number of sample points
-  uint pad0, pad1, pad2;
+  uint normalised;   // 1: fractalNoise01, 0: fractalNoise
+  uint pad1, pad2;
 };
 
 TP_END

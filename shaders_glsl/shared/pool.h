@@ -1,8 +1,9 @@
-// The pool: a square hole in the ground, its inner walls, and a tiled floor
-// shaped by value-noise terrain. A uniform buffer filled once per scene
+// The pool: a square hole in the ground, its inner walls (plain, or brick
+// with noise dirt), and a tiled floor shaped by value-noise terrain. A uniform buffer filled once per scene
 // (render/pool_model.cpp); the floor's height function is shared with C++.
 #ifndef TP_SHARED_POOL_H
 #define TP_SHARED_POOL_H
+#include "shared/brick.h"
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/noise.h"
@@ -13,9 +14,22 @@ struct PoolParams {
   vec4 box;         // x: half size of the square pool, y: rim height, z: mean floor depth below the rim, w: terrain amplitude
   vec4 terrain;     // x: terrain frequency (1/m), y: persistence; zw unused
   uvec4 noise;      // x: octaves, y: seed, z: ray-march steps, w: bisection steps
-  vec4 wallAlbedo;  // rgb
+  vec4 wallAlbedo;  // rgb: of plain walls; w: 1 for brick walls, 0 for plain
   GroundParams tiles;  // the floor's checker: plane.z tile size, albedoA, albedoB
+  vec4 brick;         // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights
+  vec4 brickAlbedo;   // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
+  vec4 mortarAlbedo;  // rgb; w unused
 };
+
+// Bricks' tones vary by up to this fraction, one tone per brick, so that
+// the courses read as bricks rather than stripes.
+const float kBrickToneVariation = 0.25f;
+// The dirt: a fractal sum of gradient noise in world metres (this frequency,
+// octaves, persistence and seed), normalised to [0, 1].
+const float kBrickDirtFrequency = 3.0f;
+const uint kBrickDirtOctaves = 4u;
+const float kBrickDirtPersistence = 0.5f;
+const uint kBrickDirtSeed = 101u;
 
 // Height of the pool floor at world xz: the mean floor plus the terrain, a
 // fractal sum of bilinear value noise normalised to [-amplitude/2, amplitude/2].
@@ -31,13 +45,38 @@ TP_INLINE float poolFloorHeight(PoolParams p, vec2 xz) {
   return h;
 }
 
+// A wall point's coordinates in metres: along the wall (x on the walls facing
+// along z, z on those facing along x) and down from the rim.
+TP_INLINE vec2 poolWallCoordinates(PoolParams p, vec3 position, vec3 normal) {
+  return vec2(abs(normal.x) > 0.5f ? position.z : position.x, p.box.y - position.y);
+}
+
+// The walls' albedo at wall coordinates `wall` (metres) over a footprint
+// (metres; 0 point-samples): plain, or brick and mortar by the fraction of
+// the footprint on brick, each brick with its own tone, darkened by dirt.
+TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
+  if (p.wallAlbedo.w == 0.0f) return vec3(p.wallAlbedo);
+  TP_PRECISE vec2 q = wall * vec2(p.brick);
+  TP_PRECISE vec2 qFootprint = footprint * vec2(p.brick);
+  TP_PRECISE float onBrick = brickFraction(q, qFootprint, vec2(p.brick.z, p.brick.w));
+  vec2 cell = brickCell(q);
+  TP_PRECISE float tone = 1.0f - kBrickToneVariation * latticeValue(int(cell.x), int(cell.y), kBrickDirtSeed);
+  TP_PRECISE vec3 mortar = vec3(p.mortarAlbedo);
+  TP_PRECISE vec3 brick = vec3(p.brickAlbedo) * tone;
+  TP_PRECISE float dirtNoise =
+      fractalNoise01(TP_NOISE_GRADIENT, wall * kBrickDirtFrequency, kBrickDirtSeed, kBrickDirtOctaves, kBrickDirtPersistence);
+  TP_PRECISE float clean = 1.0f - p.brickAlbedo.w * dirtNoise;
+  TP_PRECISE vec3 albedo = (mortar + (brick - mortar) * onBrick) * clean;
+  return albedo;
+}
+
 // The lowest the floor can be: where the walls end.
 TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.box.w; }
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 112);
+static_assert(sizeof(tp::shader::PoolParams) == 160);
 #endif
 
 #endif

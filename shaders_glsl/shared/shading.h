@@ -6,6 +6,7 @@
 // the light takes.
 #ifndef TP_SHARED_SHADING_H
 #define TP_SHARED_SHADING_H
+#include "shared/constants.h"
 #include "shared/equirect.h"
 #include "shared/frame.h"
 #include "shared/ground.h"
@@ -71,11 +72,12 @@ TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 posi
 TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.box.x) + 0.5f; }
 
 // The walls see the sky above the horizon on their side (half of it, for a
-// uniform sky); the pool's own rim is not counted.
-TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 normal) {
+// uniform sky); the pool's own rim is not counted. `footprint`: the pixel's
+// on the wall, in metres along and down it (0 point-samples the bricks).
+TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
   vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
                     sh9Irradiance(frame.skySh, normal);
-  return vec3(pool.wallAlbedo) / kPi * irradiance;
+  return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi * irradiance;
 }
 
 // Distances along origin + s dir from inside the pool's square to the wall

@@ -184,7 +184,7 @@ void SkyPass::declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& s
     const auto& cmd = pc.cmd;
     gpu::bindPipeline(cmd, pipeline, params);
     gpu::DescriptorWrites().storageImage(0, sky).bind(cmd, pipeline, pc.descriptors);
-    gpu::dispatchCovering(cmd, pipeline, params.size.x, params.size.y);
+    gpu::dispatchCovering(cmd, pipeline, params.counts.x, params.counts.x / 2);
   }, {.cached = true, .runIf = {}});
 }
 

@@ -107,7 +107,7 @@ class Tracer {
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * shader::poolWallRadiance(pool_, uniforms_, n);
+        return transmittance * shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);

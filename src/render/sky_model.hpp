@@ -1,5 +1,7 @@
 #pragma once
+#include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 
 #include "scene/scene.hpp"
 #include "shared/sh9.h"
@@ -10,6 +12,8 @@ namespace tp::render {
 // The one place where the scene's sky description becomes shader parameters
 // and the light the rest of the frame is lit by.
 glm::vec3 sunDirection(const scene::Sky& sky);
+// A scene file's noise name (scene::choices::kNoise) as shared/noise.h's TP_NOISE_*.
+uint32_t noiseKind(const std::string& name);
 shader::SkyParams skyParams(const scene::Sky& sky);
 // Irradiance of the sun disk on a surface facing it: radiance times solid angle.
 glm::vec3 sunIrradiance(const scene::Sky& sky);

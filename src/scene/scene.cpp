@@ -102,6 +102,13 @@ void validateScene(const Scene& s) {
   requireRange(s.sky.glowExponent, 1.0f, 1e5f, "sky.glow_exponent");
   requireRange(s.sky.horizonBlend, 1e-4f, 1.0f, "sky.horizon_blend");
   requireRange(float(s.sky.textureWidth), 16.0f, 16384.0f, "sky.texture_width");
+  const Clouds& c = s.sky.clouds;
+  requireRange(c.coverage, 0.0f, 1.0f, "sky.clouds.coverage");
+  requireRange(c.scale, 1e-3f, 1e3f, "sky.clouds.scale");
+  requireRange(float(c.octaves), 1.0f, 12.0f, "sky.clouds.octaves");
+  requireRange(c.persistence, 0.0f, 1.0f, "sky.clouds.persistence");
+  requireOneOf(c.noise, choices::kNoise, "sky.clouds.noise");
+  requireNonNegative(c.color, "sky.clouds.color");
   requireRange(s.ground.halfExtent, 1e-3f, 1e5f, "ground.half_extent");
   requireRange(s.ground.height, -1e4f, 1e4f, "ground.height");
   requireRange(s.ground.checkerSize, 1e-4f, 1e4f, "ground.checker_size");
@@ -122,6 +129,16 @@ void validateScene(const Scene& s) {
   requireNonNegative(w.absorption, "water.absorption");
   requireRange(s.pool.depth, 1e-3f, 1e3f, "pool.depth");
   requireNonNegative(s.pool.wallAlbedo, "pool.wall_albedo");
+  requireOneOf(s.pool.wallPattern, choices::kWallPattern, "pool.wall_pattern");
+  requireRange(s.pool.brickWidth, 1e-3f, 1e2f, "pool.brick_width");
+  requireRange(s.pool.brickHeight, 1e-3f, 1e2f, "pool.brick_height");
+  requireRange(s.pool.mortarFraction, 0.0f, 0.5f, "pool.mortar_fraction");
+  if (!(s.pool.mortarFraction * s.pool.brickHeight < s.pool.brickWidth)) {
+    throw std::runtime_error("pool.mortar_fraction times pool.brick_height (the joints' width) must be less than pool.brick_width");
+  }
+  requireNonNegative(s.pool.brickAlbedo, "pool.brick_albedo");
+  requireNonNegative(s.pool.mortarAlbedo, "pool.mortar_albedo");
+  requireRange(s.pool.dirt, 0.0f, 1.0f, "pool.dirt");
   requireRange(s.pool.tileSize, 1e-4f, 1e3f, "pool.tile_size");
   requireNonNegative(s.pool.tileAlbedoA, "pool.tile_albedo_a");
   requireNonNegative(s.pool.tileAlbedoB, "pool.tile_albedo_b");

@@ -17,9 +17,26 @@ inline const std::vector<std::string> kAoDepthLookup{"interpolated", "nearest"};
 inline const std::vector<std::string> kAoBlur{"off", "box", "bilateral"};
 inline const std::vector<std::string> kAoResolution{"full", "half"};
 inline const std::vector<std::string> kAoPreset{"fast", "balanced", "quality", "baseline"};
+inline const std::vector<std::string> kNoise{"value", "value_cubic", "gradient", "simplex"};
+inline const std::vector<std::string> kWallPattern{"plain", "brick"};
 }  // namespace choices
 
-// The procedural sky, in the terms a scene file uses. render/sky_params.cpp
+// Clouds on a plane over the sky: a fractal sum of noise (shared/noise.h,
+// normalised to [0, 1]) thresholded by the coverage, fading out towards the
+// horizon. They hide the sky and its glow, never the sun (which lights the
+// scene regardless).
+struct Clouds {
+  float coverage = 0.0f;          // 0: a clear sky, 1: overcast
+  float scale = 1.5f;             // noise frequency on the cloud plane, per unit of its height
+  unsigned octaves = 5;
+  float persistence = 0.5f;
+  unsigned seed = 3;
+  std::string noise = "simplex";  // value | value_cubic | gradient | simplex
+  glm::vec3 color{1.1f, 1.1f, 1.15f};  // radiance of a cloud
+  bool operator==(const Clouds&) const = default;
+};
+
+// The procedural sky, in the terms a scene file uses. render/sky_model.cpp
 // turns it into the shader's SkyParams.
 struct Sky {
   float sunElevationDegrees = 35.0f;
@@ -37,6 +54,7 @@ struct Sky {
   // An equirectangular .exr or .hdr to use instead of the procedural sky
   // (absolute, or relative to the scene file); it lights the scene alone.
   std::string image;
+  Clouds clouds;
   bool operator==(const Sky&) const = default;
 };
 
@@ -50,10 +68,18 @@ struct Ground {
 };
 
 // The pool that holds the water: a square hole in the ground, as wide as the
-// water, with inner walls and a tiled floor shaped by value-noise terrain.
+// water, with inner walls (plain, or running-bond brick with noise dirt) and a
+// tiled floor shaped by value-noise terrain.
 struct Pool {
   float depth = 1.2f;  // mean floor depth below the rim (the ground)
-  glm::vec3 wallAlbedo{0.55f, 0.56f, 0.58f};
+  glm::vec3 wallAlbedo{0.55f, 0.56f, 0.58f};  // of plain walls
+  std::string wallPattern = "plain";          // plain | brick
+  float brickWidth = 0.24f;                   // metres, joint included (courses repeat every brick width along)
+  float brickHeight = 0.08f;                  // metres, joint included
+  float mortarFraction = 0.15f;               // the joints' width as a fraction of the brick height
+  glm::vec3 brickAlbedo{0.55f, 0.24f, 0.16f};
+  glm::vec3 mortarAlbedo{0.62f, 0.60f, 0.55f};
+  float dirt = 0.3f;                          // how much noise darkens the bricks (0: clean, 1: black at worst)
   float tileSize = 0.25f;
   glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
   glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};

@@ -34,6 +34,15 @@ void visitScene(V& v, Scene& s) {
     r.number("horizon_blend", s.sky.horizonBlend);
     r.count("texture_width", s.sky.textureWidth);
     r.text("image", s.sky.image);
+    r.object("clouds", [&](auto& c) {
+      c.number("coverage", s.sky.clouds.coverage);
+      c.number("scale", s.sky.clouds.scale);
+      c.count("octaves", s.sky.clouds.octaves);
+      c.number("persistence", s.sky.clouds.persistence);
+      c.count("seed", s.sky.clouds.seed);
+      c.choice("noise", s.sky.clouds.noise, choices::kNoise);
+      c.color("color", s.sky.clouds.color);
+    });
   });
   v.object("ground", [&](auto& r) {
     r.number("half_extent", s.ground.halfExtent);
@@ -65,6 +74,13 @@ void visitScene(V& v, Scene& s) {
   v.object("pool", [&](auto& r) {
     r.number("depth", s.pool.depth);
     r.color("wall_albedo", s.pool.wallAlbedo);
+    r.choice("wall_pattern", s.pool.wallPattern, choices::kWallPattern);
+    r.number("brick_width", s.pool.brickWidth);
+    r.number("brick_height", s.pool.brickHeight);
+    r.number("mortar_fraction", s.pool.mortarFraction);
+    r.color("brick_albedo", s.pool.brickAlbedo);
+    r.color("mortar_albedo", s.pool.mortarAlbedo);
+    r.number("dirt", s.pool.dirt);
     r.number("tile_size", s.pool.tileSize);
     r.color("tile_albedo_a", s.pool.tileAlbedoA);
     r.color("tile_albedo_b", s.pool.tileAlbedoB);
