@@ -256,6 +256,7 @@ TEST(RenderSequence, RefusesBadInputWithOneLine) {
       {"--frames 0-3 --checkpoint-dir " + dir.file("water") + out, "was made for another scene's water"},
       {"--frames 0-3 --frame 2" + out, "excludes"},
       {"--resume" + out, "--resume requires --frames"},
+      {"--frames 0-1 --no-ao --aov ao" + out, "--aov ao, ao_raw and ao_ref come from the SSAO passes"},
       {"--frames 0-3 --checkpoint-every 0 --checkpoint-dir " + dir.file("water") + out, "--checkpoint-every"},
   };
   for (const auto& [args, expected] : cases) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include "io/image_io.hpp"
 #include "render/gbuffer_world.hpp"
@@ -75,6 +76,17 @@ std::vector<float> referenceAo(const scene::Scene& scene, const render::Rendered
 
 bool wants(const std::vector<std::string>& aovs, const char* name) {
   return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
+}
+
+RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
+  const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
+  if (ao && (o.reference || !scene.ao.enabled)) {
+    throw std::runtime_error("--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
+                             "nor with a scene whose ao.enabled is false");
+  }
+  const bool geometry = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P");
+  return {{.aovs = geometry, .skipping = !o.noSkip},
+          {.hdr = true, .ldr = !o.png.empty(), .aovs = geometry, .ao = ao}};
 }
 
 void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,

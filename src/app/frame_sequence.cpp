@@ -1,26 +1,16 @@
 #include "app/frame_sequence.hpp"
 
-#include <charconv>
-#include <optional>
+#include "app/whole_number.hpp"
+
 #include <stdexcept>
 #include <string_view>
 
 namespace tp::app {
-namespace {
-
-std::optional<uint32_t> frameNumber(std::string_view text) {
-  uint32_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
-}  // namespace
 
 FrameRange parseFrameRange(const std::string& text) {
   const size_t dash = text.find('-');
-  const auto first = frameNumber(std::string_view(text).substr(0, dash));
-  const auto last = dash == std::string::npos ? first : frameNumber(std::string_view(text).substr(dash + 1));
+  const auto first = wholeNumber<uint32_t>(std::string_view(text).substr(0, dash));
+  const auto last = dash == std::string::npos ? first : wholeNumber<uint32_t>(std::string_view(text).substr(dash + 1));
   if (!first || !last || *first > *last) {
     throw std::runtime_error("--frames " + text + ": expected A-B, frame numbers with A <= B (e.g. 0-99), or one frame N");
   }

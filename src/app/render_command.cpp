@@ -116,20 +116,15 @@ int runRender(const RenderOptions& o) {
     io::checkWritable(o.png);
   }
   const scene::Scene scene = loadScene(o.scene);
-  const bool aoAovs = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
-  if (aoAovs && (o.reference || !scene.ao.enabled)) {
-    throw std::runtime_error("--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
-                             "nor with a scene whose ao.enabled is false");
-  }
-
-  const bool aovs = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P");
+  RasterPlan plan = rasterPlan(o, scene);
   GpuSession session(o.validate, o.device);
   render::RenderedFrame frame;
   if (o.reference) {
     frame = renderReferenceFrame(session, scene, o);
   } else {
-    render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs, .skipping = !o.noSkip});
-    frame = renderer.render({.frame = o.frame, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs, .ao = aoAovs});
+    render::Renderer renderer(session.context(), scene, o.width, o.height, plan.renderer);
+    plan.request.frame = o.frame;
+    frame = renderer.render(plan.request);
   }
   writeFrame(o, scene, frame, o.frame, o.out, o.png);
   std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height, o.floatOutput ? "float" : "half",

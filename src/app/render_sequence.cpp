@@ -62,6 +62,7 @@ int runRenderSequence(const RenderOptions& o) {
     io::checkWritable((std::filesystem::path(o.checkpointDir) / "water.000000.json").string());
   }
   const scene::Scene scene = loadScene(o.scene);
+  RasterPlan plan = rasterPlan(o, scene);
   if (!o.checkpointDir.empty() && !scene.water.enabled) {
     throw std::runtime_error("--checkpoint-dir: the scene has no water to checkpoint");
   }
@@ -82,10 +83,8 @@ int runRenderSequence(const RenderOptions& o) {
                 range.count() - todo.size(), todo.size());
   }
 
-  const bool aoAovs = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
-  const bool aovs = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P");
   GpuSession session(o.validate, o.device);
-  render::Renderer renderer(session.context(), scene, o.width, o.height, {.aovs = aovs, .skipping = !o.noSkip});
+  render::Renderer renderer(session.context(), scene, o.width, o.height, plan.renderer);
   const uint64_t fingerprint = scene.water.enabled ? waterFingerprint(scene) : 0;
   if (!o.checkpointDir.empty()) {
     if (const auto checkpoint = latestCheckpoint(o.checkpointDir, todo.front(), fingerprint)) {
@@ -98,8 +97,8 @@ int runRenderSequence(const RenderOptions& o) {
   uint32_t written = 0;
   for (const uint32_t f : todo) {
     if (InterruptGuard::received()) break;
-    const render::RenderedFrame frame =
-        renderer.render({.frame = f, .hdr = true, .ldr = !o.png.empty(), .aovs = aovs, .ao = aoAovs});
+    plan.request.frame = f;
+    const render::RenderedFrame frame = renderer.render(plan.request);
     const std::string exr = framePath(o.out, f);
     writeFrame(o, scene, frame, f, exr, o.png.empty() ? "" : framePath(o.png, f));
     if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0) saveCheckpoint(o.checkpointDir, renderer.checkpoint(), fingerprint);

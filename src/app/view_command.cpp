@@ -1,7 +1,6 @@
 #include "app/view_command.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -9,26 +8,18 @@
 
 #include "app/gpu_session.hpp"
 #include "app/view_loop.hpp"
+#include "app/whole_number.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_file.hpp"
 
 namespace tp::app {
 namespace {
 
-// The whole of `text` as a number, or nothing.
-template <typename T>
-std::optional<T> number(std::string_view text) {
-  T value{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
 // "WxH", each side 1..kMaxFrameSide, or nothing.
 std::optional<std::pair<uint32_t, uint32_t>> parseSize(std::string_view text) {
   const size_t x = text.find('x');
   if (x == std::string_view::npos) return std::nullopt;
-  const auto w = number<uint32_t>(text.substr(0, x)), h = number<uint32_t>(text.substr(x + 1));
+  const auto w = wholeNumber<uint32_t>(text.substr(0, x)), h = wholeNumber<uint32_t>(text.substr(x + 1));
   if (!w || !h || *w == 0 || *h == 0 || *w > kMaxFrameSide || *h > kMaxFrameSide) return std::nullopt;
   return std::pair{*w, *h};
 }
@@ -43,13 +34,13 @@ ScriptedDrop scriptedDrop(const std::string& text) {
   constexpr const char* form = "FRAME:X,Z,RADIUS,AMP, e.g. 30:0.5,-0.3,0.25,0.04 (a positive radius)";
   const size_t colon = text.find(':');
   if (colon == std::string::npos) throw badValue("--script-drop", text, form);
-  const auto frame = number<uint32_t>(std::string_view(text).substr(0, colon));
+  const auto frame = wholeNumber<uint32_t>(std::string_view(text).substr(0, colon));
   float values[4];
   std::string_view rest = std::string_view(text).substr(colon + 1);
   for (int i = 0; i < 4; ++i) {
     const size_t comma = i < 3 ? rest.find(',') : rest.size();
     if (comma == std::string_view::npos) throw badValue("--script-drop", text, form);
-    const auto value = number<float>(rest.substr(0, comma));
+    const auto value = wholeNumber<float>(rest.substr(0, comma));
     if (!value || !std::isfinite(*value)) throw badValue("--script-drop", text, form);
     values[i] = *value;
     rest = rest.substr(std::min(comma + 1, rest.size()));
@@ -62,7 +53,7 @@ ScriptedResize scriptedResize(const std::string& text) {
   constexpr const char* form = "FRAME:WxH with each side 1 to 16384, e.g. 30:640x360";
   const size_t colon = text.find(':');
   if (colon == std::string::npos) throw badValue("--script-resize", text, form);
-  const auto frame = number<uint32_t>(std::string_view(text).substr(0, colon));
+  const auto frame = wholeNumber<uint32_t>(std::string_view(text).substr(0, colon));
   const auto wh = parseSize(std::string_view(text).substr(colon + 1));
   if (!frame || !wh) throw badValue("--script-resize", text, form);
   return {*frame, wh->first, wh->second};
@@ -80,7 +71,7 @@ std::optional<std::vector<double>> numberList(std::string_view text, size_t coun
   for (size_t k = 0; k < count; ++k) {
     const size_t comma = k + 1 < count ? text.find(',') : text.size();
     if (comma == std::string_view::npos) return std::nullopt;
-    const auto value = number<double>(text.substr(0, comma));
+    const auto value = wholeNumber<double>(text.substr(0, comma));
     if (!value || !std::isfinite(*value)) return std::nullopt;
     values.push_back(*value);
     text = text.substr(std::min(comma + 1, text.size()));
@@ -91,7 +82,7 @@ std::optional<std::vector<double>> numberList(std::string_view text, size_t coun
 ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_t height) {
   const std::string_view all(text);
   const size_t colon = all.find(':');
-  const auto frame = number<uint32_t>(all.substr(0, colon));
+  const auto frame = wholeNumber<uint32_t>(all.substr(0, colon));
   if (colon == std::string_view::npos || !frame) throw badValue("--script", text, kScriptForm);
   const std::string_view rest = all.substr(colon + 1);
   const size_t argsAt = rest.find(':');
