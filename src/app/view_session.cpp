@@ -7,6 +7,7 @@
 #include "gpu/spirv_library.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
+#include "render/water_model.hpp"
 #include "scene/scene_file.hpp"
 
 namespace tp::app {
@@ -154,18 +155,6 @@ void ViewSession::tell(std::string message, bool error, std::FILE* stream) {
   messageIsError_ = error;
 }
 
-namespace {
-
-// The water's own simulation: what a renderer carrying the water on from
-// another must share with it (ior and absorption only shade).
-bool sameWaterMotion(scene::Water a, scene::Water b) {
-  a.ior = b.ior;
-  a.absorption = b.absorption;
-  return a == b;
-}
-
-}  // namespace
-
 bool ViewSession::setScene(const scene::Scene& wanted) {
   try {
     scene::validateScene(wanted);
@@ -184,17 +173,13 @@ bool ViewSession::setScene(const scene::Scene& wanted) {
       }
     }
     if (now.water.enabled && wanted.water.enabled) {
-      scene::Water dynamics = now.water;
-      dynamics.waveSpeed = wanted.water.waveSpeed;
-      dynamics.damping = wanted.water.damping;
-      dynamics.boundary = wanted.water.boundary;
-      dynamics.maxSlope = wanted.water.maxSlope;
+      const scene::Water dynamics = render::withDynamicsOf(now.water, wanted.water);
       if (dynamics != now.water) renderer_->setWaterDynamics(dynamics);
     }
     changed_ = true;
     if (renderer_->scene() == wanted) return true;
     const uint32_t width = renderer_->width(), height = renderer_->height();
-    if (sameWaterMotion(renderer_->scene().water, wanted.water)) {
+    if (render::sameWaterMotion(renderer_->scene().water, wanted.water)) {
       renderer_ = std::make_unique<render::Renderer>(*renderer_, wanted);
     } else {
       // A new simulation: it starts again at frame 0.

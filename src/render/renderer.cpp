@@ -238,6 +238,11 @@ struct Renderer::Resources {
     waterTop = highestWater(scene, stats);
   }
 
+  // The stats' energy per unit area of the water: WaterSleep's measure.
+  static double energyPerArea(const scene::Scene& scene, const sim::WaterStats& stats) {
+    return stats.energy / (double(scene.water.extent) * scene.water.extent);
+  }
+
   // The highest the water's surface can be to reach the objects: the rim,
   // unless the last stats saw a wave over it.
   static float highestWater(const scene::Scene& scene, const sim::WaterStats& stats) {
@@ -379,10 +384,7 @@ bool bodyMoves(const scene::Scene& scene, double t0, double t1) {
 
 // `scene`, when its water is `previous`'s but for what only shades it.
 const scene::Scene& sameWater(const scene::Scene& previous, const scene::Scene& scene) {
-  scene::Water shading = scene.water;
-  shading.ior = previous.water.ior;
-  shading.absorption = previous.water.absorption;
-  if (shading != previous.water) {
+  if (!sameWaterMotion(scene.water, previous.water)) {
     throw std::invalid_argument(
         "a renderer that goes on with the water needs the same water but for ior and absorption: "
         "other water settings need a new renderer (the water restarts)");
@@ -454,12 +456,7 @@ void Renderer::moveSphere(size_t index, glm::vec3 center) {
 
 void Renderer::setWaterDynamics(const scene::Water& water) {
   if (!res_->water) throw std::runtime_error("the scene has no water");
-  scene::Water others = water;
-  others.waveSpeed = scene_.water.waveSpeed;
-  others.damping = scene_.water.damping;
-  others.boundary = scene_.water.boundary;
-  others.maxSlope = scene_.water.maxSlope;
-  if (others != scene_.water) {
+  if (withDynamicsOf(water, scene_.water) != scene_.water) {
     throw std::invalid_argument("only the wave speed, damping, boundary and max slope change on a live renderer");
   }
   // Everything that can refuse the change, before any of it is made.
@@ -509,7 +506,7 @@ void Renderer::resume(const WaterCheckpoint& checkpoint) {
   const sim::WaterStats stats = res_->water->stats(waterStep(scene_.water));
   res_->restartWater(scene_, stats);
   res_->sleep.resume(checkpoint.quietFrames, checkpoint.asleep);
-  res_->waterEnergy = stats.energy / (double(scene_.water.extent) * scene_.water.extent);
+  res_->waterEnergy = Resources::energyPerArea(scene_, stats);
 }
 
 RenderedFrame Renderer::render(const FrameRequest& request) {
@@ -616,8 +613,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     for (const size_t i : res_->dropsDue) res_->dropsApplied[i] = true;
     const sim::WaterStats stats = res_->water->readStats();
     sim::checkHealth(stats, res_->stepsDone, std::numeric_limits<double>::infinity());
-    const double area = double(scene_.water.extent) * scene_.water.extent;
-    res_->waterEnergy = stats.energy / area;
+    res_->waterEnergy = Resources::energyPerArea(scene_, stats);
     res_->sleep.observe(res_->waterEnergy);
     res_->waterTop = Resources::highestWater(scene_, stats);
   }

@@ -69,6 +69,21 @@ glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {
   return {p.x + 0.5f * w.extent, p.y, p.z + 0.5f * w.extent};
 }
 
+scene::Water withDynamicsOf(scene::Water water, const scene::Water& from) {
+  water.waveSpeed = from.waveSpeed;
+  water.damping = from.damping;
+  water.boundary = from.boundary;
+  water.maxSlope = from.maxSlope;
+  return water;
+}
+
+bool sameWaterMotion(const scene::Water& a, const scene::Water& b) {
+  scene::Water shading = a;
+  shading.ior = b.ior;
+  shading.absorption = b.absorption;
+  return shading == b;
+}
+
 uint32_t waterSubsteps(const scene::Water& w) { return sim::substepsFor(waterParams(w), w.frameTime); }
 
 double waterStep(const scene::Water& w) { return double(w.frameTime) / waterSubsteps(w); }

@@ -27,6 +27,13 @@ sim::WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
 sim::WaterParams waterParams(const scene::Water& water);
+
+// `water` with the dynamics of `from`: its wave speed, damping, boundary and
+// max slope, what a live renderer changes (Renderer::setWaterDynamics).
+scene::Water withDynamicsOf(scene::Water water, const scene::Water& from);
+// Whether two waters move alike, being equal but for their ior and
+// absorption (which only shade): a renderer can carry one's state on to the other.
+bool sameWaterMotion(const scene::Water& a, const scene::Water& b);
 // World position to the simulation's frame, whose grid starts at the water square's corner.
 glm::vec3 worldToGrid(const scene::Water& water, glm::vec3 p);
 // Seconds per simulation step: the frame time split into the fewest stable substeps.
