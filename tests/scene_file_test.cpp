@@ -51,6 +51,21 @@ TEST(SceneFile, MalformedAndTruncatedJson) {
   EXPECT_NE(errorOf("{\"camera\": nan}").find("not valid JSON"), std::string::npos);
 }
 
+// Parsed in full and refused for what they hold, not by crashing: 20 MB of
+// numbers under an unknown key, and arrays nested a million deep.
+TEST(SceneFile, HugeAndDeeplyNestedJson) {
+  std::string huge = "{\"water\": {\"wave_speed\": 0.5}, \"junk\": [";
+  for (int i = 0; i < 2'000'000; ++i) huge += "1234567.8,";
+  huge += "0]}";
+  EXPECT_NE(errorOf(huge).find("shot.json: junk: is not a known key"), std::string::npos);
+  const std::string deep = std::string(1'000'000, '[') + std::string(1'000'000, ']');
+  EXPECT_NE(errorOf(deep).find("shot.json: the top level: expected an object"), std::string::npos) << errorOf(deep);
+  const std::string deepInside = "{\"camera\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}";
+  EXPECT_NE(errorOf(deepInside).find("camera: expected an object"), std::string::npos);
+  const std::string cut = "{\"camera\": " + std::string(100'000, '[');
+  EXPECT_NE(errorOf(cut).find("not valid JSON"), std::string::npos);
+}
+
 TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"camera": {"fov": 180}})").find("camera fov"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"fov": 1e999}})").find("shot.json: not valid JSON"), std::string::npos);
