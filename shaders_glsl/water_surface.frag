@@ -1,17 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The water surface, accurate refraction: the refracted ray is cast against
-// the pool (walls exactly, the terrain floor by marching and bisection) and
-// the objects, and attenuated along its path through the water.
+// The water surface seen from above (its front faces; the back faces are
+// water_surface_below.frag's draw), accurate refraction: the refracted ray is
+// cast against the pool (walls exactly, the terrain floor by marching and
+// bisection) and the objects, and attenuated along its path through the water.
 #include "lib/water_shading.glsl"
 
 void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 n = normalize(worldNormal);
-  if (!gl_FrontFacing) {
-    color = shadeFromBelow(view, n);
-    return;
-  }
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);

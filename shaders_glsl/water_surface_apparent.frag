@@ -4,8 +4,9 @@
 // approximation): the refracted ray is followed down to the pool's mean floor
 // depth only, that point is projected to the screen, and the frame's own image
 // of the pool under the water (copied before the water is drawn) is read there.
-// Seen from below, the surface is shaded as in the accurate mode: the
-// approximation is the original's view from above.
+// Only the front faces, the surface seen from above: the approximation is the
+// original's view from above, and from below both modes draw the back faces
+// with water_surface_below.frag.
 #include "lib/water_shading.glsl"
 
 layout(binding = 5) uniform sampler2D underwater;
@@ -13,10 +14,6 @@ layout(binding = 5) uniform sampler2D underwater;
 void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 n = normalize(worldNormal);
-  if (!gl_FrontFacing) {
-    color = shadeFromBelow(view, n);
-    return;
-  }
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);

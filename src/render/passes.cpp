@@ -224,16 +224,27 @@ void GroundPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const
   });
 }
 
+namespace {
+// One side of the water mesh: its front faces (seen from above) shaded by the
+// refraction mode's shader, its back faces (seen from below) by the shader
+// both modes share, the other side culled.
+gpu::GraphicsPipelineDesc waterSide(const char* fragmentShader, vk::CullModeFlags cull) {
+  return {.vertexShader = "water_surface.vert",
+          .fragmentShader = fragmentShader,
+          .pushSize = sizeof(shader::WaterSurfaceParams),
+          .colorFormats = {kHdrFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true,
+          .topology = vk::PrimitiveTopology::eTriangleStrip,
+          .cullMode = cull};
+}
+}  // namespace
+
 WaterSurfacePass::WaterSurfacePass(const gpu::Context& ctx, bool apparentDepth)
-    : pipeline(gpu::createGraphicsPipeline(ctx, {.vertexShader = "water_surface.vert",
-                                                 .fragmentShader = apparentDepth ? "water_surface_apparent.frag"
-                                                                                 : "water_surface.frag",
-                                                 .pushSize = sizeof(shader::WaterSurfaceParams),
-                                                 .colorFormats = {kHdrFormat},
-                                                 .depthFormat = kDepthFormat,
-                                                 .depthTest = true,
-                                                 .depthWrite = true,
-                                                 .topology = vk::PrimitiveTopology::eTriangleStrip})) {}
+    : above(gpu::createGraphicsPipeline(
+          ctx, waterSide(apparentDepth ? "water_surface_apparent.frag" : "water_surface.frag", vk::CullModeFlagBits::eBack))),
+      below(gpu::createGraphicsPipeline(ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront))) {}
 
 static void drawWater(const vk::raii::CommandBuffer& cmd, const WaterDraw& water) {
   cmd.bindIndexBuffer(water.indices->handle(), 0, vk::IndexType::eUint32);
@@ -253,17 +264,19 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
              [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
     drawOver(cmd, color, depth, [&] {
-      gpu::bindPipeline(cmd, pipeline, water.params);
-      gpu::DescriptorWrites writes;
-      writes.uniformBuffer(0, frameUniforms)
-          .sampledImage(1, sky, sampler)
-          .storageBuffer(2, water.state())
-          .uniformBuffer(3, *pool.uniforms)
-          .uniformBuffer(4, *pool.objects);
-      if (underwater) writes.sampledImage(5, *underwater->image, underwater->sampler);
-      writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
-      writes.bind(cmd, pipeline, pc.descriptors);
-      drawWater(cmd, water);
+      for (const gpu::Pipeline* side : {&above, &below}) {
+        gpu::bindPipeline(cmd, *side, water.params);
+        gpu::DescriptorWrites writes;
+        writes.uniformBuffer(0, frameUniforms)
+            .sampledImage(1, sky, sampler)
+            .storageBuffer(2, water.state())
+            .uniformBuffer(3, *pool.uniforms)
+            .uniformBuffer(4, *pool.objects);
+        if (underwater && gpu::hasBinding(*side, 5)) writes.sampledImage(5, *underwater->image, underwater->sampler);
+        writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
+        writes.bind(cmd, *side, pc.descriptors);
+        drawWater(cmd, water);
+      }
     });
   });
 }

@@ -132,7 +132,7 @@ struct WaterSurfacePass {
                const gpu::Image& depth, const WaterDraw& water, const PoolDraw& pool, ResourceRef skyRef,
                const gpu::Image& sky, vk::Sampler sampler, const gpu::Buffer& frameUniforms,
                std::optional<Underwater> underwater) const;
-  gpu::Pipeline pipeline;
+  gpu::Pipeline above, below;  // two draws of the mesh: its front faces, then its back faces
 };
 
 // Graphics: the caustics texture, accumulated from the water grid refracting

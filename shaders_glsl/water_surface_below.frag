@@ -1,0 +1,11 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The water surface seen from under the water: the back faces of the mesh,
+// drawn by their own pipeline (front faces culled) in both refraction modes.
+// A separate draw rather than a branch on gl_FrontFacing: lavapipe runs both
+// sides of a branch, and the cast below the surface is the costliest code here.
+#include "lib/water_shading.glsl"
+
+void main() {
+  color = shadeFromBelow(normalize(worldPosition - frame.cameraPosition.xyz), normalize(worldNormal));
+}
