@@ -32,6 +32,10 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 struct ViewStats {
   uint32_t framesShown = 0;
   double seconds = 0.0;        // from the first frame's start to the last one's present
+  // From the first frame's present to the last one's: the steady rate, without
+  // the first frame's one-off costs (lavapipe compiles each pipeline's shaders
+  // on its first draw, the sky and the caches are filled).
+  double secondsAfterFirst = 0.0;
   double renderSeconds = 0.0;  // in Renderer::render, readback included
   double showSeconds = 0.0;    // in FramePresenter::show and swapchain recreation, waits for FIFO included
   uint32_t recreations = 0;
@@ -141,7 +145,7 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
   bool panelShown = config.panel;
   // Frames per second over the last frames shown (an exponential average of their intervals).
   double frameInterval = 0.0;
-  Clock::time_point lastShown = start;
+  Clock::time_point lastShown = start, firstShown = start;
   uint32_t shown = 0;  // frames shown so far: the script's clock
   while (!config.frames || shown < *config.frames) {
     // Paused on a frame already shown, a viewer run by hand (no --frames, no
@@ -218,12 +222,14 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     ++shown;
     ++stats.framesShown;
     const Clock::time_point shownAt = Clock::now();
+    if (stats.framesShown == 1) firstShown = shownAt;
     const double interval = std::chrono::duration<double>(shownAt - lastShown).count();
     frameInterval = frameInterval > 0.0 ? (1.0 - kFpsSmoothing) * frameInterval + kFpsSmoothing * interval : interval;
     lastShown = shownAt;
     retitle(false);
   }
   stats.seconds = secondsSince(start);
+  if (stats.framesShown > 1) stats.secondsAfterFirst = std::chrono::duration<double>(lastShown - firstShown).count();
   stats.window = display.extent();
   return stats;
 }
@@ -239,10 +245,11 @@ int runViewer(const ViewConfig& config) {
   render::RenderedFrame last;
   const ViewStats stats = showFrames(session.context(), window, config, last);
   const double perFrame = stats.framesShown > 0 ? 1000.0 / stats.framesShown : 0.0;
-  std::printf("view: %u frames at %ux%u in %.2f s, %.2f fps (render %.1f ms, show %.1f ms per frame) on %s; "
-              "window %ux%u, swapchain recreations: %u; last frame number %u\n",
+  const double steadyFps = stats.secondsAfterFirst > 0.0 ? (stats.framesShown - 1) / stats.secondsAfterFirst : 0.0;
+  std::printf("view: %u frames at %ux%u in %.2f s, %.2f fps, %.2f after the first (render %.1f ms, show %.1f ms per "
+              "frame) on %s; window %ux%u, swapchain recreations: %u; last frame number %u\n",
               stats.framesShown, config.width, config.height, stats.seconds,
-              stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, stats.renderSeconds * perFrame,
+              stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, steadyFps, stats.renderSeconds * perFrame,
               stats.showSeconds * perFrame, session.context().deviceName().c_str(), stats.window.width,
               stats.window.height, stats.recreations, stats.lastFrame);
   if (config.profile && !last.passes.empty()) {
