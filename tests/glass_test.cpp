@@ -180,4 +180,12 @@ TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
   EXPECT_EQ(render::findPass(plain.passes, "glass"), nullptr);
 }
 
+// With nothing skipped (every sphere drawn, in view or not) the glass comes
+// out the same to the bit.
+TEST_F(GlassTest, SkippingChangesNoBitOfTheGlass) {
+  const scene::Scene s = render::glassSphereView();
+  render::Renderer skipping(ctx(), s, 64, 36), everything(ctx(), s, 64, 36, {.skipping = false});
+  EXPECT_EQ(skipping.render({.frame = 0, .hdr = true}).rgba, everything.render({.frame = 0, .hdr = true}).rgba);
+}
+
 }  // namespace tp::test
