@@ -194,20 +194,21 @@ struct Renderer::Resources {
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too.
     if (scene.ao.enabled) declareAo(ctx, scene.ao, surfaces);
-    // Glass after AO (it neither occludes nor is occluded), before the water,
-    // which draws over what of it is under the surface.
+    std::optional<Underwater> underwater;
+    if (water && scene.render.refraction == "apparent") {
+      underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
+                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                           "underwater image");
+      underwater = Underwater{graph.image("underwater", underwaterImage), &underwaterImage, *nearestSampler};
+      declareImageCopy(graph, "underwater", colorRef, color, underwater->ref, underwaterImage);
+    }
+    // Glass after AO (it neither occludes nor is occluded) and after the
+    // apparent-depth mode's copy (the water's rays do not meet glass), before
+    // the water, which draws over what of it is under the surface.
     if (std::any_of(scene.spheres.begin(), scene.spheres.end(), scene::isGlass)) {
       declareGlass(ctx, w, h, surfaces, mediumDraw, skyRef);
     }
     if (water) {
-      std::optional<Underwater> underwater;
-      if (scene.render.refraction == "apparent") {
-        underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
-                                             vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                                             "underwater image");
-        underwater = Underwater{graph.image("underwater", underwaterImage), &underwaterImage, *nearestSampler};
-        declareImageCopy(graph, "underwater", colorRef, color, underwater->ref, underwaterImage);
-      }
       waterPass.emplace(ctx, underwater.has_value());
       waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, *poolDraw, skyRef, sky, *sampler, uniforms,
                          underwater);
