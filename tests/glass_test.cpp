@@ -13,6 +13,7 @@
 #include "render/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "shared/glass.h"
+#include "shared/objects.h"
 
 namespace tp::test {
 namespace {
@@ -66,6 +67,31 @@ TEST(GlassOptics, ASphereNeverTotallyReflectsInside) {
     const glm::vec3 inside = glm::refract(view, n, 1.0f / ior);
     const glm::vec3 exit = -2.0f * glm::dot(n, inside) * inside + n;  // unit sphere at the origin, entered at n
     EXPECT_FALSE(shader::glassTotalInternalReflection(inside, glm::normalize(exit), ior)) << cosI;
+  }
+}
+
+// What the raster's search assumes: a ray refracted into a sphere seen from
+// outside leaves it through a back face, one the camera does not see, so
+// the back faces' depth alone brackets the exit. Over the whole visible cap,
+// cameras 1.2 to 20 radii away, indices 1.01 to 3.
+TEST(GlassOptics, ASphereIsLeftThroughItsBackFaces) {
+  for (float distance : {1.2f, 1.5f, 2.0f, 5.0f, 20.0f}) {
+    for (float ior : {1.01f, 1.5f, 3.0f}) {
+      const glm::vec3 camera(0.0f, 0.0f, distance);
+      size_t rays = 0;
+      for (int i = 0; i <= 100; ++i) {
+        for (int j = 0; j <= 100; ++j) {
+          const glm::vec3 view = glm::normalize(glm::vec3(-1.0f + 0.02f * float(i), -1.0f + 0.02f * float(j), -distance));
+          const float s = shader::raySphere(camera, view, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+          if (s <= 0.0f) continue;
+          const glm::vec3 entry = camera + s * view, inside = glm::refract(view, entry, 1.0f / ior);
+          const glm::vec3 exit = entry - 2.0f * glm::dot(entry, inside) * inside;  // its own outward normal
+          EXPECT_GT(glm::dot(exit - camera, exit), 0.0f) << distance << " " << ior;
+          ++rays;
+        }
+      }
+      EXPECT_GT(rays, 5000u);
+    }
   }
 }
 
