@@ -92,4 +92,13 @@ TEST(BadInput, WaterLargerThanTheDeviceHolds) {
   EXPECT_NE(line.find("storage buffer limit"), std::string::npos) << line;
 }
 
+// A glass sphere of an impossible index, from the command line: one line naming the key.
+TEST(BadInput, GlassOfAnImpossibleIndex) {
+  ScratchDir dir;
+  writeText(dir.file("glass.json"), "{\"spheres\": [{\"material\": \"glass\", \"ior\": 0.9}]}");
+  const std::string line =
+      expectCleanFailure("render --out " + dir.file("x.exr") + " --scene " + dir.file("glass.json"), dir, {"glass.json"});
+  EXPECT_NE(line.find("spheres[].ior = 0.900000 is outside (1, 3]"), std::string::npos) << line;
+}
+
 }  // namespace tp::test

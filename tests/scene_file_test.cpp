@@ -87,6 +87,28 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
             std::string::npos);
 }
 
+// Glass spheres: a material of the list, an index of refraction over 1 and
+// at most 3, and 1 to 64 search steps; each refusal one line naming the key.
+TEST(SceneFile, GlassKeys) {
+  const auto s = scene::parseScene(R"({"spheres": [{"material": "glass", "ior": 1.33}, {}],
+                                       "render": {"glass_search_steps": 16}})", "x");
+  ASSERT_EQ(s.spheres.size(), 2u);
+  EXPECT_TRUE(scene::isGlass(s.spheres[0]));
+  EXPECT_EQ(s.spheres[0].ior, 1.33f);
+  EXPECT_FALSE(scene::isGlass(s.spheres[1]));  // lambert by default
+  EXPECT_EQ(s.spheres[1].ior, 1.5f);
+  EXPECT_EQ(s.render.glassSearchSteps, 16u);
+  EXPECT_EQ(errorOf(R"({"spheres": [{"material": "metal"}]})"),
+            "shot.json: spheres[].material must be one of lambert, glass, got 'metal'");
+  EXPECT_EQ(errorOf(R"({"spheres": [{"material": "glass", "ior": 1}]})"),
+            "shot.json: spheres[].ior = 1.000000 is outside (1, 3]");
+  EXPECT_EQ(errorOf(R"({"spheres": [{"ior": 3.5}]})"), "shot.json: spheres[].ior = 3.500000 is outside (1, 3]");
+  EXPECT_EQ(errorOf(R"({"spheres": [{"ior": "glass"}]})"), "shot.json: spheres[0].ior: expected a number, got string");
+  EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 0}})").find("render.glass_search_steps = 0.000000 is outside [1"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 65}})").find("render.glass_search_steps"), std::string::npos);
+}
+
 TEST(SceneFile, UnreadableFiles) {
   EXPECT_THROW(scene::loadSceneFile("/nonexistent/scene.json"), std::runtime_error);
   EXPECT_THROW(scene::loadSceneFile("/tmp"), std::runtime_error);
@@ -153,6 +175,8 @@ TEST(SceneFile, SavedScenesReadBackToTheSameScene) {
   awkward.water.level = std::nextafter(-0.15f, 0.0f);
   awkward.water.drops = {{0.1f, -0.7f, 0.123456789f, 1e-6f}, {0.5f, 0.2f, 0.3f, -0.02f, 12}, {0.0f, 0.0f, 0.1f, 0.01f, 1u << 30}};
   awkward.spheres[0].path = {{0.0f, {0.0f, -0.2f, 0.0f}}, {2.5f, {1.0f / 7.0f, -0.2f, 0.5f}}};
+  awkward.spheres.push_back({.center = {0.3f, 0.5f, 0.1f}, .radius = 0.3f, .material = "glass", .ior = 1.0f / 0.7f});
+  awkward.render.glassSearchSteps = 13;
   awkward.boxes = {{.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}, .yawDegrees = 33.3f}};
   awkward.ao = scene::aoPreset("baseline");
   awkward.ao.radius = 0.7f;

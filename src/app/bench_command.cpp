@@ -93,6 +93,25 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   ibl->add_option("--csv", o.ibl.csv, "CSV output")->type_name("PATH")->capture_default_str();
   ibl->add_option("--plot", o.ibl.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   addGpuOptions(ibl, o.ibl.validate, o.ibl.device);
+  CLI::App* glass = bench->add_subcommand(
+      "glass", "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");
+  glass->add_option("--scene", o.glass.scenePath, "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  glass->add_option("--resolution", o.glass.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  glass->add_option("--steps", o.glass.steps, "Binary-search steps to measure, each 1 to 64")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 64u));
+  glass->add_option("--samples", o.glass.samples, "Samples per pixel of the reference")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4096u));
+  glass->add_option("--repeats", o.glass.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  glass->add_option("--csv", o.glass.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  glass->add_option("--plot", o.glass.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(glass, o.glass.validate, o.glass.device);
   return bench;
 }
 
@@ -103,6 +122,7 @@ int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);
   if (bench->get_subcommand("ibl")->parsed()) return runBenchIbl(o.ibl);
+  if (bench->get_subcommand("glass")->parsed()) return runBenchGlass(o.glass);
   return 2;
 }
 

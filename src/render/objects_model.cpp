@@ -8,6 +8,7 @@ namespace tp::render {
 shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   shader::SceneObjects objects{};
   std::vector<scene::Sphere> spheres = scene.spheres;
+  std::erase_if(spheres, scene::isGlass);  // the water's rays do not meet glass (README, "Glass")
   std::vector<scene::Box> boxes = scene.boxes;
   // Boxes turn about the vertical only: their lowest point is half their height down.
   const auto sphereBelow = std::stable_partition(spheres.begin(), spheres.end(), [&](const scene::Sphere& s) {
@@ -54,6 +55,12 @@ scene::Mesh boxMesh(const scene::Box& box, const std::string& name) {
 shader::SphereParams sphereParams(const scene::Sphere& sphere) {
   return {glm::vec4(sphere.center, sphere.radius), glm::vec4(sphere.albedo, 0.0f),
           glm::uvec4(kSphereStacks, kSphereSlices, 0u, 0u)};
+}
+
+shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps) {
+  const shader::SphereParams shape = sphereParams(sphere);
+  return {shape.sphere, shape.albedo, shape.tessellation, glm::vec4(sphere.ior, 0.0f, 0.0f, 0.0f),
+          glm::uvec4(searchSteps, 0u, 0u, 0u)};
 }
 
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name) {

@@ -9,7 +9,6 @@
 #include <limits>
 
 namespace tp::render {
-namespace {
 
 void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent) {
   cmd.setViewport(0, vk::Viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f});
@@ -17,7 +16,7 @@ void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent) {
 }
 
 vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout layout, vk::AttachmentLoadOp load,
-                                       vk::ClearValue clear = {}) {
+                                       vk::ClearValue clear) {
   return vk::RenderingAttachmentInfo{.imageView = *image.view,
                                      .imageLayout = layout,
                                      .loadOp = load,
@@ -40,6 +39,8 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
   draw();
   cmd.endRendering();
 }
+
+namespace {
 
 // Renders over the opaque surfaces' targets. The first surface pass
 // (`first`) clears depth and the G-buffer (zero ambient: AO takes nothing from

@@ -182,6 +182,15 @@ struct TonemapPass {
   gpu::Pipeline pipeline;
 };
 
+// Helpers of the graphics passes, for those declared in files of their own
+// (glass_passes.cpp): the viewport and scissor of a target, an attachment
+// stored after the pass, and a draw over what colour and depth already hold.
+void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
+vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout layout, vk::AttachmentLoadOp load,
+                                       vk::ClearValue clear = {});
+void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
+              const std::function<void()>& draw);
+
 // Transfer: an image copied into a buffer for the host to read.
 void declareReadback(FrameGraph& graph, const std::string& name, ResourceRef imageRef, const gpu::Image& image,
                      ResourceRef bufferRef, const gpu::Buffer& buffer);

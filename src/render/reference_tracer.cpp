@@ -1,5 +1,6 @@
 #include "render/reference_tracer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -13,6 +14,8 @@
 #include "render/sky_image.hpp"
 #include "render/sky_model.hpp"
 #include "render/water_model.hpp"
+#include "shared/glass.h"
+#include "shared/objects.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
 
@@ -79,10 +82,36 @@ class Tracer {
       if (m == Material::Water) waterMesh_ = int(traced.size());
       traced.push_back(std::move(mesh));
     }
-    spheres_ = placed.spheres;
+    // Glass spheres are seen from the camera alone (cameraRadiance); the
+    // other rays pass them by, as the raster's water does.
+    for (const scene::Sphere& sphere : placed.spheres) (scene::isGlass(sphere) ? glass_ : spheres_).push_back(sphere);
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
     bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
     tracedMeshes_ = std::move(traced);
+  }
+
+  // Radiance arriving at the camera at `origin` from direction -dir: a glass
+  // sphere, if one is nearer than what radiance() meets, else that.
+  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, SurfacePoint* first) const {
+    const scene::Sphere* glass = nullptr;
+    float nearest = std::numeric_limits<float>::infinity();
+    for (const scene::Sphere& sphere : glass_) {
+      const float s = shader::raySphere(origin, dir, glm::vec4(sphere.center, sphere.radius));
+      if (s > 0.0f && s < nearest) {
+        nearest = s;
+        glass = &sphere;
+      }
+    }
+    if (glass) {
+      const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
+      if (!hit.hit() || hit.distance > nearest) {
+        const glm::vec3 p = origin + nearest * dir;
+        if (first) *first = {p, glm::normalize(p - glass->center)};
+        const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * nearest) : glm::vec3(1.0f);
+        return transmittance * glassRadiance(*glass, p, dir);
+      }
+    }
+    return radiance(origin, dir, inWater, specular, first);
   }
 
   // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
@@ -132,6 +161,18 @@ class Tracer {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
 
+  // The glass model of shared/glass.h with the exact exit point: the chord of
+  // the sphere from p along the refracted ray, its far end at distance
+  // -2 (p - c).t (p on the sphere).
+  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir) const {
+    const glm::vec3 n = glm::normalize(p - glass.center);
+    const float reflectance = shader::fresnelDielectric(std::max(-glm::dot(dir, n), 0.0f), 1.0f, glass.ior);
+    const glm::vec3 inside = glm::refract(dir, n, 1.0f / glass.ior);
+    const glm::vec3 exit = p - 2.0f * glm::dot(p - glass.center, inside) * inside;
+    const glm::vec3 leaving = shader::glassExitDirection(inside, glm::normalize(exit - glass.center), glass.ior);
+    return glm::mix(sky(leaving), sky(glm::reflect(dir, n)), reflectance);
+  }
+
   // Both branches at the surface, weighted by the exact Fresnel reflectance.
   glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, SurfacePoint* first) const {
     const scene::Mesh& mesh = tracedMeshes_[size_t(waterMesh_)];
@@ -178,7 +219,8 @@ class Tracer {
   std::vector<glm::vec3> albedo_;  // per traced mesh: the boxes'; unused for the others
   int waterMesh_ = -1;
   std::vector<glm::vec3> waterNormals_;
-  std::vector<scene::Sphere> spheres_;  // where they are at the frame's time
+  std::vector<scene::Sphere> spheres_;  // the Lambertian ones, where they are at the frame's time
+  std::vector<scene::Sphere> glass_;    // the glass ones
   std::unique_ptr<ReferenceScene> bvh_;
 };
 
@@ -225,12 +267,12 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const float sx = (float(s) + 0.5f) / float(options.samples), sy = options.samples == 1 ? 0.5f : radicalInverse(s);
         cameraRay(float(x) + sx, float(y) + sy, origin, dir);
-        sum += tracer.radiance(origin, dir, cameraInWater, 0, nullptr);
+        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;
       cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
-      tracer.radiance(origin, dir, cameraInWater, options.maxSpecular, &first);  // no branches: the surface alone
+      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, &first);  // no branches: the surface alone
       for (int c = 0; c < 3; ++c) {
         out.rgba[k * 4 + c] = color[c];
         out.normal[k * 4 + c] = first.normal[c];

@@ -9,6 +9,7 @@
 #include "gpu/timer.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/frustum.hpp"
+#include "render/glass_passes.hpp"
 #include "render/water_sleep.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
@@ -193,15 +194,21 @@ struct Renderer::Resources {
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too.
     if (scene.ao.enabled) declareAo(ctx, scene.ao, surfaces);
+    std::optional<Underwater> underwater;
+    if (water && scene.render.refraction == "apparent") {
+      underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
+                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                           "underwater image");
+      underwater = Underwater{graph.image("underwater", underwaterImage), &underwaterImage, *nearestSampler};
+      declareImageCopy(graph, "underwater", colorRef, color, underwater->ref, underwaterImage);
+    }
+    // Glass after AO (it neither occludes nor is occluded) and after the
+    // apparent-depth mode's copy (the water's rays do not meet glass), before
+    // the water, which draws over what of it is under the surface.
+    if (std::any_of(scene.spheres.begin(), scene.spheres.end(), scene::isGlass)) {
+      declareGlass(ctx, w, h, surfaces, mediumDraw, skyRef);
+    }
     if (water) {
-      std::optional<Underwater> underwater;
-      if (scene.render.refraction == "apparent") {
-        underwaterImage = gpu::createImage2D(ctx, {w, h}, kHdrFormat,
-                                             vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                                             "underwater image");
-        underwater = Underwater{graph.image("underwater", underwaterImage), &underwaterImage, *nearestSampler};
-        declareImageCopy(graph, "underwater", colorRef, color, underwater->ref, underwaterImage);
-      }
       waterPass.emplace(ctx, underwater.has_value());
       waterPass->declare(graph, colorRef, color, depthRef, depth, *waterDraw, *poolDraw, skyRef, sky, *sampler, uniforms,
                          underwater);
@@ -223,7 +230,7 @@ struct Renderer::Resources {
       aovPass.emplace(ctx, poolDraw.has_value());
       aovPass->declare(graph, normalRef, aovNormal, positionRef, aovPosition, graph.image("aov depth", aovDepth),
                        aovDepth, uniforms, ground, poolDraw ? &*poolDraw : nullptr, waterDraw ? &*waterDraw : nullptr,
-                       &spheres, &boxes);
+                       &aovSpheres, &boxes);
       declareReadback(graph, "readback normal", normalRef, aovNormal, normalReadbackRef, normalReadback);
       declareReadback(graph, "readback position", positionRef, aovPosition, positionReadbackRef, positionReadback);
     }
@@ -257,6 +264,21 @@ struct Renderer::Resources {
     gbufferAmbient = gpu::createImage2D(ctx, {w, h}, kGbufferFormat, usage, "G-buffer ambient radiance");
     surfaces.normal = {graph.image("view normal", gbufferNormal), &gbufferNormal};
     surfaces.ambient = {graph.image("ambient", gbufferAmbient), &gbufferAmbient};
+  }
+
+  // The glass spheres' passes and the back faces' targets (glass_passes.hpp).
+  void declareGlass(const gpu::Context& ctx, uint32_t w, uint32_t h, const SurfaceTargets& surfaces,
+                    const MediumDraw& mediumDraw, ResourceRef skyRef) {
+    glassBackFaces = gpu::createImage2D(ctx, {w, h}, kGlassBackFormat,
+                                        vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
+                                        "glass back faces");
+    glassDepth = gpu::createImage2D(ctx, {w, h}, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                                    "glass back-face depth");
+    const GlassTargets targets{{graph.image("glass back faces", glassBackFaces), &glassBackFaces},
+                               {graph.image("glass depth", glassDepth), &glassDepth}};
+    glassPasses.emplace(ctx);
+    glassPasses->declare(graph, targets, surfaces, mediumDraw, skyRef, sky, *sampler, *nearestSampler, uniforms,
+                         &glassSpheres);
   }
 
   // The SSAO passes and their images, and the readbacks a frame asking for
@@ -327,6 +349,11 @@ struct Renderer::Resources {
   std::optional<ObjectPass> objectPass;
   std::vector<shader::SphereParams> spheres;  // where the spheres are in the frame being recorded
   std::vector<shader::BoxParams> boxes;
+  std::vector<shader::SphereParams> aovSpheres;  // every sphere in view, glass too, for the AOV pass
+  // Glass spheres, when the scene has them: those in view, filled by render().
+  std::optional<GlassPasses> glassPasses;
+  gpu::Image glassBackFaces, glassDepth;
+  std::vector<shader::GlassSphereParams> glassSpheres;
   std::optional<CameraMediumPass> cameraMediumPass;
   gpu::Buffer medium;
   // Ambient occlusion, when the scene has it on.
@@ -562,8 +589,16 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   const scene::Scene placed = scene::sceneAt(scene_, time);
   const Frustum frustum(uniforms.viewProjection);
   res_->spheres.clear();
+  res_->glassSpheres.clear();
+  res_->aovSpheres.clear();
   for (const auto& sphere : placed.spheres) {
-    if (!res_->skipping || frustum.mayShow(sphere.center, sphere.radius)) res_->spheres.push_back(sphereParams(sphere));
+    if (res_->skipping && !frustum.mayShow(sphere.center, sphere.radius)) continue;
+    if (scene::isGlass(sphere)) {
+      res_->glassSpheres.push_back(glassSphereParams(sphere, scene_.render.glassSearchSteps));
+    } else {
+      res_->spheres.push_back(sphereParams(sphere));
+    }
+    res_->aovSpheres.push_back(sphereParams(sphere));
   }
   res_->boxes.clear();
   for (const auto& box : placed.boxes) {

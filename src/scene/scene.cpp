@@ -116,6 +116,7 @@ void validateScene(const Scene& s) {
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
   requireOneOf(s.render.refraction, choices::kRefraction, "render.refraction");
+  requireRange(float(s.render.glassSearchSteps), 1.0f, 64.0f, "render.glass_search_steps");
   const Water& w = s.water;
   requireRange(float(w.grid), 2.0f, 8192.0f, "water.grid");
   requireRange(w.extent, 1e-3f, 1e4f, "water.extent");
@@ -157,6 +158,10 @@ void validateScene(const Scene& s) {
     requireFinite(sphere.center, "spheres[].center");
     requireRange(sphere.radius, 1e-4f, 1e3f, "spheres[].radius");
     requireNonNegative(sphere.albedo, "spheres[].albedo");
+    requireOneOf(sphere.material, choices::kMaterial, "spheres[].material");
+    if (!(sphere.ior > 1.0f && sphere.ior <= 3.0f)) {
+      throw std::runtime_error("spheres[].ior = " + std::to_string(sphere.ior) + " is outside (1, 3]");
+    }
     for (size_t k = 0; k < sphere.path.size(); ++k) {
       requireFinite(sphere.path[k].center, "spheres[].path[].center");
       requireRange(sphere.path[k].time, 0.0f, 1e6f, "spheres[].path[].time");

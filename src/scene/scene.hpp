@@ -19,6 +19,7 @@ inline const std::vector<std::string> kAoResolution{"full", "half"};
 inline const std::vector<std::string> kAoPreset{"fast", "balanced", "quality", "baseline"};
 inline const std::vector<std::string> kNoise{"value", "value_cubic", "gradient", "simplex"};
 inline const std::vector<std::string> kWallPattern{"plain", "brick"};
+inline const std::vector<std::string> kMaterial{"lambert", "glass"};
 }  // namespace choices
 
 // Clouds on a plane over the sky: a fractal sum of noise (shared/noise.h,
@@ -104,17 +105,22 @@ struct Keyframe {
 };
 
 // A sphere; with a path it moves (linearly between keyframes, held before the
-// first and after the last) and pushes the water as it goes.
+// first and after the last) and pushes the water as it goes. Lambertian, or
+// glass (README, "Glass"): refracting the sky through it, seen directly only.
 struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
-  glm::vec3 albedo{0.8f, 0.3f, 0.2f};
+  glm::vec3 albedo{0.8f, 0.3f, 0.2f};  // of a lambert sphere
   std::vector<Keyframe> path = {};
+  std::string material = "lambert";    // lambert | glass
+  float ior = 1.5f;                    // of a glass sphere, in (1, 3]
   bool operator==(const Sphere&) const = default;
 };
 
 // Where the sphere's centre is at time t.
 glm::vec3 sphereCenterAt(const Sphere& sphere, float t);
+
+inline bool isGlass(const Sphere& sphere) { return sphere.material == "glass"; }
 
 // A Lambertian box, turned about the vertical by `yaw`; it stands still, and
 // the simulated water passes through it (it is drawn over the water inside it).
@@ -167,6 +173,8 @@ struct Render {
   // caustics pass); off, the floor is lit as through flat water, as the
   // reference (render --reference) lights it.
   bool caustics = true;
+  // Binary-search steps for where a ray leaves a glass sphere (1 to 64).
+  unsigned glassSearchSteps = 8;
   bool operator==(const Render&) const = default;
 };
 

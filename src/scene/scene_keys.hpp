@@ -100,6 +100,8 @@ void visitScene(V& v, Scene& s) {
       k.number("time", key.time);
       k.vec3("center", key.center);
     });
+    r.choice("material", sphere.material, choices::kMaterial);
+    r.number("ior", sphere.ior);
   });
   v.objects("boxes", s.boxes, [](auto& r, scene::Box& box) {
     r.vec3("center", box.center);
@@ -125,6 +127,7 @@ void visitScene(V& v, Scene& s) {
     r.number("exposure", s.render.exposure);
     r.choice("refraction", s.render.refraction, choices::kRefraction);
     r.flag("caustics", s.render.caustics);
+    r.count("glass_search_steps", s.render.glassSearchSteps);
   });
 }
 

@@ -1,0 +1,66 @@
+// Glass spheres: the push constants of their passes and the optics both the
+// raster (glass.frag, Wyman's two-interface refraction in image space) and the
+// CPU reference (render/reference_tracer.cpp, the exact exit point) use, so
+// that the difference between the two measures only how the raster finds the
+// exit point and its normal.
+//
+// The model, on both sides: at the front surface the exact unpolarised
+// Fresnel reflectance (not Schlick's fit) splits the view ray into its
+// reflection and its refraction into the glass; the refracted ray leaves at
+// the exit point, refracted out by the exit normal, with no Fresnel loss
+// there; where it cannot leave (total internal reflection) it takes the
+// internally reflected direction instead, once, as if it left that way. Both
+// directions that leave, the reflection and the exit ray, look up the sky
+// alone: the glass shows the environment, not the scene around it.
+#ifndef TP_SHARED_GLASS_H
+#define TP_SHARED_GLASS_H
+#include "shared/interop.h"
+
+TP_BEGIN
+
+// Push constants of both glass passes, one draw per glass sphere. The first
+// 48 bytes are SphereParams, so sphere.vert tessellates it unchanged.
+struct GlassSphereParams {
+  vec4 sphere;         // xyz centre, w radius
+  vec4 albedo;         // unused (SphereParams' place)
+  uvec4 tessellation;  // x: stacks, y: slices
+  vec4 glass;          // x: index of refraction
+  uvec4 search;        // x: binary-search steps for the exit point (render.glass_search_steps)
+};
+
+// Unpolarised Fresnel reflectance of a dielectric interface for a ray meeting
+// it at incidence cosine cosI (> 0), going from index n1 into n2; 1 past the
+// critical angle.
+TP_INLINE float fresnelDielectric(float cosI, float n1, float n2) {
+  float eta = n1 / n2;
+  float sin2T = eta * eta * (1.0f - cosI * cosI);
+  if (sin2T >= 1.0f) return 1.0f;
+  float cosT = sqrt(1.0f - sin2T);
+  float rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+  float rp = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+// The ray inside the glass, direction t (unit), leaving through a surface of
+// outward normal nOut: refracted out into the air, or, under total internal
+// reflection, reflected back in (the direction then looked up as if it left).
+TP_INLINE vec3 glassExitDirection(vec3 t, vec3 nOut, float ior) {
+  vec3 leaving = refract(t, -nOut, ior);
+  if (dot(leaving, leaving) == 0.0f) return reflect(t, -nOut);
+  return normalize(leaving);
+}
+
+// Whether the ray leaving through nOut is totally internally reflected.
+TP_INLINE bool glassTotalInternalReflection(vec3 t, vec3 nOut, float ior) {
+  float cosI = dot(t, nOut);
+  return ior * ior * (1.0f - cosI * cosI) >= 1.0f;
+}
+
+TP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(tp::shader::GlassSphereParams) == 80);
+static_assert(offsetof(tp::shader::GlassSphereParams, glass) == 48);
+#endif
+
+#endif

@@ -1,0 +1,105 @@
+#include "app/bench_glass.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "app/bench_output.hpp"
+#include "app/gpu_session.hpp"
+#include "io/atomic_file.hpp"
+#include "render/glass_view.hpp"
+#include "render/image_error.hpp"
+#include "render/reference_tracer.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_file.hpp"
+
+namespace tp::app {
+namespace {
+
+// The raster's error is taken at 4x4 samples per pixel, box filtered, to meet
+// the reference's samples at the silhouette (tests/glass_test.cpp does the same).
+constexpr uint32_t kSupersample = 4;
+
+struct Measured {
+  double backMs = 0.0, frontMs = 0.0, frameMs = 0.0;
+  double rmse = 0.0, maxError = 0.0;
+  size_t pixels = 0;
+};
+
+}  // namespace
+
+int runBenchGlass(const BenchGlassOptions& o) {
+  checkBenchOutputs(o.csv, o.plot);
+  const Resolution r = parseResolution(o.resolution, "bench glass");
+  const scene::Scene base = o.scenePath.empty() ? render::glassSphereView() : scene::loadSceneFile(o.scenePath);
+  const uint32_t frame = 0;
+  const scene::Scene placed = scene::sceneAt(base, 0.0f);
+  if (std::none_of(placed.spheres.begin(), placed.spheres.end(), scene::isGlass)) {
+    throw std::runtime_error("bench glass: the scene has no glass sphere");
+  }
+  for (uint32_t steps : o.steps) {
+    scene::Scene s = base;
+    s.render.glassSearchSteps = steps;
+    scene::validateScene(s);  // the steps' bounds, before anything is measured
+  }
+  GpuSession session(o.validate, o.device);
+  const gpu::Context& ctx = session.context();
+  std::fprintf(stderr, "bench glass: reference at %ux%u, %u samples per pixel\n", r.width, r.height, o.samples);
+  const auto reference = render::renderReference(base, nullptr, frame, r.width, r.height, {.samples = o.samples});
+  const auto mask = render::glassPixelMask(reference, placed);
+
+  std::vector<Measured> results;
+  for (uint32_t steps : o.steps) {
+    scene::Scene s = base;
+    s.render.glassSearchSteps = steps;
+    Measured m;
+    render::Renderer timed(ctx, s, r.width, r.height);
+    std::vector<double> back, front, total;
+    timed.render({.frame = frame, .hdr = true});  // warms up
+    for (uint32_t i = 0; i < o.repeats; ++i) {
+      const auto f = timed.render({.frame = frame, .hdr = true});
+      double b = 0.0, g = 0.0, t = 0.0;
+      for (const auto& pass : f.passes) {
+        if (pass.name == "glass back faces") b += pass.milliseconds;
+        if (pass.name == "glass") g += pass.milliseconds;
+        t += pass.milliseconds;
+      }
+      back.push_back(b);
+      front.push_back(g);
+      total.push_back(t);
+    }
+    m.backMs = median(back);
+    m.frontMs = median(front);
+    m.frameMs = median(total);
+    render::Renderer fine(ctx, s, r.width * kSupersample, r.height * kSupersample);
+    const auto raster = fine.render({.frame = frame, .hdr = true});
+    const auto filtered = render::boxDownsample(raster.rgba, raster.width, raster.height, kSupersample);
+    const auto e = render::tonemappedError(filtered, reference.rgba, s.render.exposure, mask);
+    m.rmse = e.rmse;
+    m.maxError = e.maxError;
+    m.pixels = e.pixels;
+    results.push_back(m);
+    std::fprintf(stderr, "bench glass: %u steps done\n", steps);
+  }
+
+  io::AtomicFile csvFile(o.csv);
+  std::ofstream csv(csvFile.tempPath());
+  csv << "steps,glass_ms,back_ms,front_ms,frame_ms,rmse,max_error,glass_pixels,width,height,supersample,"
+         "reference_samples,device\n";
+  std::printf("%6s %9s %9s %9s %9s %8s %8s %7s\n", "steps", "glass ms", "back ms", "front ms", "frame ms", "RMSE",
+              "max", "pixels");
+  for (size_t c = 0; c < results.size(); ++c) {
+    const Measured& m = results[c];
+    std::printf("%6u %9.3f %9.3f %9.3f %9.3f %8.4f %8.4f %7zu\n", o.steps[c], m.backMs + m.frontMs, m.backMs,
+                m.frontMs, m.frameMs, m.rmse, m.maxError, m.pixels);
+    csv << o.steps[c] << "," << formatNumber("%.6g", m.backMs + m.frontMs) << "," << formatNumber("%.6g", m.backMs)
+        << "," << formatNumber("%.6g", m.frontMs) << "," << formatNumber("%.6g", m.frameMs) << ","
+        << formatNumber("%.6g", m.rmse) << "," << formatNumber("%.6g", m.maxError) << "," << m.pixels << "," << r.width
+        << "," << r.height << "," << kSupersample << "," << o.samples << ",\"" << ctx.deviceName() << "\"\n";
+  }
+  commitBenchCsv(csvFile, csv, "plot_bench_glass.py", o.plot);
+  return session.finish();
+}
+
+}  // namespace tp::app

@@ -1,0 +1,217 @@
+// Glass spheres: the optics shared by the raster and the reference
+// (shared/glass.h) against Snell's and Fresnel's laws, and the raster's
+// image-space refraction (glass.frag, Wyman 2005) against the reference's
+// exact two-interface path, and against facts the picture must show.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "gpu_test.hpp"
+#include "render/glass_view.hpp"
+#include "render/image_error.hpp"
+#include "render/reference_tracer.hpp"
+#include "render/renderer.hpp"
+#include "shared/glass.h"
+#include "shared/objects.h"
+
+namespace tp::test {
+namespace {
+
+glm::vec3 directionAt(float degreesFromNormal) {
+  const float a = glm::radians(degreesFromNormal);
+  return {std::sin(a), std::cos(a), 0.0f};  // the normal is +y
+}
+
+}  // namespace
+
+// Leaving glass of index 1.5 (critical angle asin(1/1.5) = 41.81 degrees):
+// below it Snell's law, ior sin(i) = sin(t); past it the internal reflection,
+// the tangential part kept and the normal part turned back.
+TEST(GlassOptics, ExitRefractsBelowTheCriticalAngleAndReflectsPastIt) {
+  const float ior = 1.5f;
+  for (float degrees : {0.0f, 10.0f, 30.0f, 41.0f}) {
+    const glm::vec3 t = directionAt(degrees), out = shader::glassExitDirection(t, {0.0f, 1.0f, 0.0f}, ior);
+    EXPECT_FALSE(shader::glassTotalInternalReflection(t, {0.0f, 1.0f, 0.0f}, ior));
+    EXPECT_NEAR(ior * std::sin(glm::radians(degrees)), out.x, 1e-5f) << degrees;
+    EXPECT_GT(out.y, 0.0f);
+  }
+  for (float degrees : {42.0f, 60.0f, 89.0f}) {
+    const glm::vec3 t = directionAt(degrees), out = shader::glassExitDirection(t, {0.0f, 1.0f, 0.0f}, ior);
+    EXPECT_TRUE(shader::glassTotalInternalReflection(t, {0.0f, 1.0f, 0.0f}, ior)) << degrees;
+    EXPECT_NEAR(out.x, t.x, 1e-6f);
+    EXPECT_NEAR(out.y, -t.y, 1e-6f);
+  }
+}
+
+// Fresnel's equations at normal incidence ((n - 1) / (n + 1))^2, 1 at grazing
+// incidence and past the critical angle, and the same from either side at
+// angles related by Snell's law (Stokes).
+TEST(GlassOptics, FresnelReflectance) {
+  EXPECT_NEAR(shader::fresnelDielectric(1.0f, 1.0f, 1.5f), 0.04f, 1e-6f);
+  EXPECT_NEAR(shader::fresnelDielectric(1e-4f, 1.0f, 1.5f), 1.0f, 1e-3f);
+  EXPECT_EQ(shader::fresnelDielectric(std::cos(glm::radians(45.0f)), 1.5f, 1.0f), 1.0f);
+  const float cosI = std::cos(glm::radians(50.0f)), sinT = std::sin(glm::radians(50.0f)) / 1.5f;
+  EXPECT_NEAR(shader::fresnelDielectric(cosI, 1.0f, 1.5f), shader::fresnelDielectric(std::sqrt(1.0f - sinT * sinT), 1.5f, 1.0f),
+              1e-6f);
+}
+
+// A sphere never traps light: the chord makes the same angle with the normal
+// at both ends, so a ray refracted in always leaves (the reference's exact
+// exit never meets total internal reflection), over the whole front face.
+TEST(GlassOptics, ASphereNeverTotallyReflectsInside) {
+  const float ior = 1.5f;
+  for (int i = 0; i <= 1000; ++i) {
+    const float cosI = std::max(float(i) / 1000.0f, 1e-4f);
+    const glm::vec3 n(0.0f, 1.0f, 0.0f), view(std::sqrt(1.0f - cosI * cosI), -cosI, 0.0f);
+    const glm::vec3 inside = glm::refract(view, n, 1.0f / ior);
+    const glm::vec3 exit = -2.0f * glm::dot(n, inside) * inside + n;  // unit sphere at the origin, entered at n
+    EXPECT_FALSE(shader::glassTotalInternalReflection(inside, glm::normalize(exit), ior)) << cosI;
+  }
+}
+
+// What the raster's search assumes: a ray refracted into a sphere seen from
+// outside leaves it through a back face, one the camera does not see, so
+// the back faces' depth alone brackets the exit. Over the whole visible cap,
+// cameras 1.2 to 20 radii away, indices 1.01 to 3.
+TEST(GlassOptics, ASphereIsLeftThroughItsBackFaces) {
+  for (float distance : {1.2f, 1.5f, 2.0f, 5.0f, 20.0f}) {
+    for (float ior : {1.01f, 1.5f, 3.0f}) {
+      const glm::vec3 camera(0.0f, 0.0f, distance);
+      size_t rays = 0;
+      for (int i = 0; i <= 100; ++i) {
+        for (int j = 0; j <= 100; ++j) {
+          const glm::vec3 view = glm::normalize(glm::vec3(-1.0f + 0.02f * float(i), -1.0f + 0.02f * float(j), -distance));
+          const float s = shader::raySphere(camera, view, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+          if (s <= 0.0f) continue;
+          const glm::vec3 entry = camera + s * view, inside = glm::refract(view, entry, 1.0f / ior);
+          const glm::vec3 exit = entry - 2.0f * glm::dot(entry, inside) * inside;  // its own outward normal
+          EXPECT_GT(glm::dot(exit - camera, exit), 0.0f) << distance << " " << ior;
+          ++rays;
+        }
+      }
+      EXPECT_GT(rays, 5000u);
+    }
+  }
+}
+
+class GlassTest : public GpuTest {
+ protected:
+  // The raster at 4x4 samples per pixel, box filtered, as ReferenceRasterTest
+  // compares it (tests/reference_test.cpp).
+  std::vector<float> supersampledRaster(const scene::Scene& s, uint32_t width, uint32_t height) {
+    constexpr uint32_t factor = 4;
+    render::Renderer renderer(ctx(), s, width * factor, height * factor);
+    const auto raster = renderer.render({.frame = 0, .hdr = true});
+    EXPECT_NE(render::findPass(raster.passes, "glass back faces"), nullptr);
+    EXPECT_NE(render::findPass(raster.passes, "glass"), nullptr);
+    return render::boxDownsample(raster.rgba, width * factor, height * factor, factor);
+  }
+};
+
+// Tonemapped RMSE over the glass pixels, raster against the reference's exact
+// exit point. Measured on lavapipe at 160x90 (README, "Glass"): 0.0040 with
+// the default 8 search steps, 0.0675 with 1 step.
+constexpr double kGlassBound = 0.006;
+
+TEST_F(GlassTest, GlassSphereMatchesTheReferenceWithinTheBound) {
+  constexpr uint32_t width = 160, height = 90;
+  scene::Scene s = render::glassSphereView();
+  const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 16});
+  const auto mask = render::glassPixelMask(reference, s);
+  const auto raster = supersampledRaster(s, width, height);
+  const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure, mask);
+  const auto frame = render::tonemappedError(raster, reference.rgba, s.render.exposure);
+  s.render.glassSearchSteps = 1;
+  const auto coarse = render::tonemappedError(supersampledRaster(s, width, height), reference.rgba, s.render.exposure, mask);
+  std::printf("glass sphere, 160x90: %zu glass pixels, RMSE %.4f max %.4f (8 steps), %.4f (1 step); frame RMSE %.4f\n",
+              e.pixels, e.rmse, e.maxError, coarse.rmse, frame.rmse);
+  ASSERT_GT(e.pixels, size_t(width * height / 20));
+  EXPECT_LT(e.rmse, kGlassBound);
+  // The search is what finds the exit: one step is several times further off.
+  EXPECT_GT(coarse.rmse, 2.0 * e.rmse);
+}
+
+// Glass of index barely over 1 bends nothing and reflects nothing: a sphere
+// of it against the sky shows the sky behind it, as the frame without it does.
+TEST_F(GlassTest, IndexNearOneShowsTheSkyStraightThrough) {
+  constexpr uint32_t width = 160, height = 90;
+  scene::Scene s = render::glassSphereView();
+  s.spheres[0].ior = 1.0001f;
+  s.spheres[0].center = {0.0f, 3.0f, -1.0f};  // seen against the sky alone
+  s.camera.target = s.spheres[0].center;
+  const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 1});
+  const auto mask = render::glassPixelMask(reference, s);
+  render::Renderer withGlass(ctx(), s, width, height);
+  const auto glass = withGlass.render({.frame = 0, .hdr = true});
+  scene::Scene without = s;
+  without.spheres.clear();
+  render::Renderer sky(ctx(), without, width, height);
+  const auto background = sky.render({.frame = 0, .hdr = true});
+  const auto e = render::tonemappedError(glass.rgba, background.rgba, s.render.exposure, mask);
+  std::printf("ior 1.0001: %zu glass pixels against the sky behind them: RMSE %.5f, max %.5f\n", e.pixels, e.rmse,
+              e.maxError);
+  ASSERT_GT(e.pixels, size_t(width * height / 40));  // measured 680
+  // The sky texture looked up along nearly the same directions (the
+  // reflection of 2.6e-9 of the sky): what is left is the bend of 1e-4.
+  EXPECT_LT(e.maxError, 2e-3);
+}
+
+// A ball lens turns the world upside down: seen level with its centre, the
+// rays through its upper half leave it going down (the sky's lower half,
+// dark), those through its lower half going up (the bright sky).
+TEST_F(GlassTest, ABallLensShowsTheSkyUpsideDown) {
+  constexpr uint32_t width = 160, height = 90;
+  scene::Scene s = render::glassSphereView();
+  s.sky.sunRadiance = glm::vec3(0.0f);  // no sun glint to confuse the halves
+  s.sky.ground = glm::vec3(0.02f);
+  s.camera.position = {0.0f, s.spheres[0].center.y, 3.0f};
+  s.camera.target = s.spheres[0].center + glm::vec3(0.0f, 0.0f, -1.0f);
+  render::Renderer renderer(ctx(), s, width, height);
+  const auto frame = renderer.render({.frame = 0, .hdr = true});
+  const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 1});
+  const auto mask = render::glassPixelMask(reference, s);
+  double upper = 0.0, lower = 0.0;
+  size_t upperCount = 0, lowerCount = 0;
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const size_t k = size_t(y) * width + x;
+      // Away from the rim, where the reflection takes over, and from the middle row.
+      const float dx = float(x) + 0.5f - 0.5f * width, dy = float(y) + 0.5f - 0.5f * height;
+      if (!mask[k] || std::abs(dy) < 4.0f || dx * dx + dy * dy > 0.4f * 0.4f * height * height) continue;
+      const double luminance = frame.rgba[k * 4] + frame.rgba[k * 4 + 1] + frame.rgba[k * 4 + 2];
+      (dy < 0.0f ? upper : lower) += luminance;
+      ++(dy < 0.0f ? upperCount : lowerCount);
+    }
+  }
+  ASSERT_GT(upperCount, 50u);
+  ASSERT_GT(lowerCount, 50u);
+  upper /= double(upperCount);
+  lower /= double(lowerCount);
+  std::printf("ball lens: mean luminance of the upper half %.4f, lower half %.4f\n", upper, lower);
+  EXPECT_GT(lower, 5.0 * upper);
+}
+
+// Glass is drawn only when a glass sphere is in view; a scene without glass
+// declares nothing of it.
+TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
+  scene::Scene s = render::glassSphereView();
+  s.camera.target = s.camera.position + glm::vec3(0.0f, 0.0f, 1.0f);  // looking away
+  render::Renderer away(ctx(), s, 64, 36);
+  const auto frame = away.render({.frame = 0, .hdr = true});
+  EXPECT_EQ(render::findPass(frame.passes, "glass"), nullptr);
+  EXPECT_EQ(render::findPass(frame.passes, "glass back faces"), nullptr);
+  render::Renderer none(ctx(), scene::defaultScene(), 64, 36);
+  const auto plain = none.render({.frame = 0, .hdr = true});
+  EXPECT_EQ(render::findPass(plain.passes, "glass"), nullptr);
+}
+
+// With nothing skipped (every sphere drawn, in view or not) the glass comes
+// out the same to the bit.
+TEST_F(GlassTest, SkippingChangesNoBitOfTheGlass) {
+  const scene::Scene s = render::glassSphereView();
+  render::Renderer skipping(ctx(), s, 64, 36), everything(ctx(), s, 64, 36, {.skipping = false});
+  EXPECT_EQ(skipping.render({.frame = 0, .hdr = true}).rgba, everything.render({.frame = 0, .hdr = true}).rgba);
+}
+
+}  // namespace tp::test
