@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/bench_output.hpp"
+#include "app/bench_pass_times.hpp"
 #include "app/gpu_session.hpp"
 #include "io/atomic_file.hpp"
 #include "render/glass_view.hpp"
@@ -55,23 +56,14 @@ int runBenchGlass(const BenchGlassOptions& o) {
     s.render.glassSearchSteps = steps;
     Measured m;
     render::Renderer timed(ctx, s, r.width, r.height);
-    std::vector<double> back, front, total;
-    timed.render({.frame = frame, .hdr = true});  // warms up
-    for (uint32_t i = 0; i < o.repeats; ++i) {
-      const auto f = timed.render({.frame = frame, .hdr = true});
-      double b = 0.0, g = 0.0, t = 0.0;
-      for (const auto& pass : f.passes) {
-        if (pass.name == "glass back faces") b += pass.milliseconds;
-        if (pass.name == "glass") g += pass.milliseconds;
-        t += pass.milliseconds;
-      }
-      back.push_back(b);
-      front.push_back(g);
-      total.push_back(t);
-    }
-    m.backMs = median(back);
-    m.frontMs = median(front);
-    m.frameMs = median(total);
+    render::RenderedFrame last;
+    const PassTimes t = medianPassTimes(timed, {.frame = frame, .hdr = true}, o.repeats,
+                                        {[](const std::string& p) { return p == "glass back faces"; },
+                                         [](const std::string& p) { return p == "glass"; }},
+                                        last);
+    m.backMs = t.groups[0];
+    m.frontMs = t.groups[1];
+    m.frameMs = t.frame;
     render::Renderer fine(ctx, s, r.width * kSupersample, r.height * kSupersample);
     const auto raster = fine.render({.frame = frame, .hdr = true});
     const auto filtered = render::boxDownsample(raster.rgba, raster.width, raster.height, kSupersample);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/bench_output.hpp"
+#include "app/bench_pass_times.hpp"
 #include "app/gpu_session.hpp"
 #include "io/atomic_file.hpp"
 #include "render/gbuffer_world.hpp"
@@ -79,18 +80,8 @@ int runBenchSsao(const BenchSsaoOptions& o) {
     s.ao.radius = base.ao.radius;
     s.ao.enabled = true;
     render::Renderer renderer(ctx, s, r.width, r.height);
-    std::vector<double> ao, total;
-    render::RenderedFrame frame = renderer.render({.frame = o.frame, .hdr = true, .ao = true});  // warms up
-    for (uint32_t i = 0; i < o.repeats; ++i) {
-      frame = renderer.render({.frame = o.frame, .hdr = true, .ao = true});
-      double a = 0.0, t = 0.0;
-      for (const auto& pass : frame.passes) {
-        if (isAoPass(pass.name)) a += pass.milliseconds;
-        t += pass.milliseconds;
-      }
-      ao.push_back(a);
-      total.push_back(t);
-    }
+    render::RenderedFrame frame;
+    const PassTimes t = medianPassTimes(renderer, {.frame = o.frame, .hdr = true, .ao = true}, o.repeats, {isAoPass}, frame);
     if (reference.empty()) {
       std::fprintf(stderr, "bench ssao: reference AO at %ux%u, %u rays per pixel\n", r.width, r.height,
                    referenceOptions.rays);
@@ -103,8 +94,8 @@ int runBenchSsao(const BenchSsaoOptions& o) {
       referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     Measured& m = results[c];
-    m.aoMs = median(ao);
-    m.frameMs = median(total);
+    m.aoMs = t.groups[0];
+    m.frameMs = t.frame;
     double sum = 0.0, squares = 0.0, occludedSum = 0.0;
     size_t pixels = 0;
     for (size_t k = 0; k < reference.size(); ++k) {

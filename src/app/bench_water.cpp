@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "app/bench_output.hpp"
+#include "app/bench_pass_times.hpp"
 #include "app/gpu_session.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_uniforms.hpp"
@@ -39,29 +40,6 @@ std::vector<View> benchViews(const scene::Scene& s) {
   grazing.position = {3.8f, 0.6f, 2.6f};
   grazing.target = {0.0f, -0.4f, 0.0f};
   return {{"scene", std::nullopt}, {"overhead", overhead}, {"grazing", grazing}};
-}
-
-struct Timing {
-  double waterMs = 0.0, underwaterMs = 0.0, frameMs = 0.0;
-};
-
-// Median GPU milliseconds over `repeats` renders of one frame (after one to warm up).
-Timing timeFrames(render::Renderer& renderer, uint32_t frame, uint32_t repeats, render::RenderedFrame& last) {
-  std::vector<double> water, underwater, total;
-  last = renderer.render({.frame = frame, .hdr = true});
-  for (uint32_t r = 0; r < repeats; ++r) {
-    last = renderer.render({.frame = frame, .hdr = true});
-    double w = 0.0, u = 0.0, t = 0.0;
-    for (const auto& pass : last.passes) {
-      if (pass.name == "water") w += pass.milliseconds;
-      if (pass.name == "underwater") u += pass.milliseconds;
-      t += pass.milliseconds;
-    }
-    water.push_back(w);
-    underwater.push_back(u);
-    total.push_back(t);
-  }
-  return {median(water), median(underwater), median(total)};
 }
 
 struct FloorErrors {
@@ -151,15 +129,19 @@ int runBenchWater(const BenchWaterOptions& o) {
         s.render.refraction = mode;
         render::Renderer renderer(ctx, s, r.width, r.height);
         render::RenderedFrame frame;
-        const Timing t = timeFrames(renderer, o.frame, o.repeats, frame);
+        const PassTimes t = medianPassTimes(renderer, {.frame = o.frame, .hdr = true}, o.repeats,
+                                            {[](const std::string& p) { return p == "water"; },
+                                             [](const std::string& p) { return p == "underwater"; }},
+                                            frame);
+        const double waterMs = t.groups[0], underwaterMs = t.groups[1];
         const auto all = render::tonemappedError(frame.rgba, reference.rgba, s.render.exposure);
         const auto onWater = render::tonemappedError(frame.rgba, reference.rgba, s.render.exposure, water);
         const double floorPx = std::string(mode) == "accurate" ? floor.accuratePx : floor.apparentPx;
-        const double refractionMs = t.waterMs + t.underwaterMs;
+        const double refractionMs = waterMs + underwaterMs;
         std::printf("%-9s %4ux%-4u  %-9s %9.3f %9.3f %8.4f %10.4f %9.4f %10.3f\n", view.name.c_str(), r.width, r.height,
-                    mode, refractionMs, t.frameMs, all.rmse, onWater.rmse, onWater.maxError, floorPx);
+                    mode, refractionMs, t.frame, all.rmse, onWater.rmse, onWater.maxError, floorPx);
         csv << view.name << "," << r.width << "," << r.height << "," << mode << "," << formatNumber("%.6g", refractionMs) << ","
-            << formatNumber("%.6g", t.waterMs) << "," << formatNumber("%.6g", t.underwaterMs) << "," << formatNumber("%.6g", t.frameMs) << ","
+            << formatNumber("%.6g", waterMs) << "," << formatNumber("%.6g", underwaterMs) << "," << formatNumber("%.6g", t.frame) << ","
             << formatNumber("%.6g", all.rmse) << "," << formatNumber("%.6g", onWater.rmse) << "," << formatNumber("%.6g", onWater.maxError) << ","
             << formatNumber("%.6g", floorPx) << "," << onWater.pixels << "," << o.samples << "," << formatNumber("%.4g", referenceSeconds)
             << ",\"" << ctx.deviceName() << "\"\n";
