@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "render/frame_uniforms.hpp"
+#include "render/glossy_model.hpp"
+#include "render/glossy_quadrature.hpp"
 #include "render/hammersley.hpp"
 #include "render/pool_model.hpp"
 #include "render/reference_scene.hpp"
@@ -13,6 +15,7 @@
 #include "render/sky_image.hpp"
 #include "render/sky_model.hpp"
 #include "render/water_model.hpp"
+#include "shared/glossy.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
 
@@ -67,6 +70,8 @@ class Tracer {
         absorption_(scene.water.absorption),
         ior_(scene.water.ior) {
     if (hasPool(scene)) pool_ = poolParams(scene);
+    // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
+    if (hasGlossySurface(scene)) glossySky_ = skyImage_ ? *skyImage_ : proceduralSkyImage(scene.sky, scene.sky.textureWidth);
     const float time = float(frame) * scene.water.frameTime;
     const scene::Scene placed = scene::sceneAt(scene, time);
     std::vector<scene::Mesh> traced;
@@ -95,7 +100,8 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * shader::objectRadiance(uniforms_, sphere.albedo, n);
+      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n), dir, n,
+                                    glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -107,7 +113,8 @@ class Tracer {
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f));
+        return transmittance * glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f)), dir, n,
+                                      glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
@@ -130,6 +137,14 @@ class Tracer {
  private:
   glm::vec3 sky(glm::vec3 dir) const {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
+  }
+
+  // A surface's radiance with its glossy lobe (material: specular, roughness)
+  // about the mirror direction of `dir` in n: G exactly, by quadrature.
+  glm::vec3 glossy(glm::vec3 diffuse, glm::vec3 dir, glm::vec3 n, glm::vec2 material) const {
+    if (material.x <= 0.0f) return diffuse;
+    const glm::dvec3 g = GlossyQuadrature(*glossySky_).radiance(glm::reflect(dir, n), shader::glossyExponent(material.y));
+    return shader::glossyMix(diffuse, glm::vec3(g), material.x);
   }
 
   // Both branches at the surface, weighted by the exact Fresnel reflectance.
@@ -168,6 +183,7 @@ class Tracer {
   shader::FrameUniforms uniforms_;
   shader::SkyParams sky_;
   std::optional<SkyImage> skyImage_;
+  std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
   shader::GroundParams ground_;
   shader::PoolParams pool_{};
   uint32_t maxSpecular_;

@@ -83,6 +83,8 @@ struct Pool {
   float tileSize = 0.25f;
   glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
   glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};
+  float wallSpecular = 0.0f;   // the walls' glossy lobe's share (shared/glossy.h)
+  float wallRoughness = 0.5f;
   bool operator==(const Pool&) const = default;
 };
 
@@ -109,6 +111,8 @@ struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
   glm::vec3 albedo{0.8f, 0.3f, 0.2f};
+  float specular = 0.0f;   // the glossy lobe's share, 0 (Lambertian) to 1 (shared/glossy.h)
+  float roughness = 0.5f;  // of the glossy lobe, 0 (sharpest) to 1 (a cosine lobe)
   std::vector<Keyframe> path = {};
   bool operator==(const Sphere&) const = default;
 };
