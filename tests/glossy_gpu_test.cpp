@@ -81,10 +81,11 @@ std::vector<LevelError> levelErrors(const Levels& gpu, const render::SkyImage& s
 constexpr double kMisRms[] = {0.2, 0.085, 0.035, 0.017};
 constexpr double kMisWorst[] = {0.032, 0.042, 0.026, 0.023};
 
-// The raster against the reference on the pixels the gloss changes
-// (tonemapped RMSE, display units): measured 0.0057; the bound is the other
-// reference tests' (tests/reference_test.cpp), the gloss itself there 0.058.
-constexpr double kGlossyRasterBound = 0.012;
+// The raster against the reference on the pixels the gloss changes, the
+// surfaces wholly glossy (tonemapped RMSE, display units): measured 0.0132
+// (the gloss itself there: 0.186). Reading level 0 for every roughness (a
+// mutation) measured 0.0239; the bound lies between.
+constexpr double kGlossyRasterBound = 0.016;
 
 using GlossyGpuTest = GpuTest;
 
@@ -142,9 +143,10 @@ TEST_F(GlossyGpuTest, RasterMatchesTheReferenceWithGlossySurfaces) {
   s.render.caustics = false;
   s.ao.enabled = false;
   s.sky.textureWidth = 256;
-  s.spheres.at(0).specular = 0.5f;
+  // Glossy alone (specular 1): the pixels show G, so the difference is the prefilter's.
+  s.spheres.at(0).specular = 1.0f;
   s.spheres.at(0).roughness = 0.35f;
-  s.pool.wallSpecular = 0.4f;
+  s.pool.wallSpecular = 1.0f;
   s.pool.wallRoughness = 0.6f;
   constexpr uint32_t width = 160, height = 90, frameNumber = 0, factor = 4;
   const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
@@ -171,12 +173,12 @@ TEST_F(GlossyGpuTest, RasterMatchesTheReferenceWithGlossySurfaces) {
   std::printf("glossy sphere and walls, 160x90: tonemapped RMSE %.4f, max %.4f (the matte scene: %.4f); on the %zu "
               "pixels the gloss changes %.4f (against the matte reference there: %.4f)\n",
               e.rmse, e.maxError, matteFrame.rmse, onGloss.pixels, onGloss.rmse, againstMatte.rmse);
-  ASSERT_GT(onGloss.pixels, size_t(width * height / 40));  // measured 655
+  ASSERT_GT(onGloss.pixels, size_t(width * height / 40));  // measured 711
   EXPECT_LT(onGloss.rmse, kGlossyRasterBound);
   // Over the frame, the gloss adds little to what the matte scene has (the
   // 256-wide sky texture behind everything, which the reference evaluates
   // exactly).
-  EXPECT_LT(e.rmse, matteFrame.rmse + kGlossyRasterBound / 4.0);
+  EXPECT_LT(e.rmse, matteFrame.rmse + 0.003);
 }
 
 // The prefilter pass: recorded on the first frame, not on the next ones (the
