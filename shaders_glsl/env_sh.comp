@@ -19,28 +19,7 @@ layout(push_constant) uniform Push { EnvParams params; };
 
 shared vec3 sSh[9 * GROUP];
 
-// The piece k (< n) of the CDF starting at `base` (n + 1 entries) that holds
-// x: the last with cdf[k] <= x, so never a piece of zero probability; in
-// .y, how far across it x lies.
-vec2 invertConditional(uint base, uint n, float x) {
-  uint lo = 0u, hi = n;
-  while (hi - lo > 1u) {
-    const uint mid = (lo + hi) / 2u;
-    if (conditional[base + mid] <= x) lo = mid; else hi = mid;
-  }
-  const float width = conditional[base + lo + 1u] - conditional[base + lo];
-  return vec2(float(lo), width > 0.0 ? clamp((x - conditional[base + lo]) / width, 0.0, 1.0) : 0.5);
-}
-
-vec2 invertMarginal(uint n, float x) {
-  uint lo = 0u, hi = n;
-  while (hi - lo > 1u) {
-    const uint mid = (lo + hi) / 2u;
-    if (marginal[mid] <= x) lo = mid; else hi = mid;
-  }
-  const float width = marginal[lo + 1u] - marginal[lo];
-  return vec2(float(lo), width > 0.0 ? clamp((x - marginal[lo]) / width, 0.0, 1.0) : 0.5);
-}
+#include "lib/env_cdf.glsl"
 
 void main() {
   const uint k = gl_GlobalInvocationID.x, t = gl_LocalInvocationIndex;
@@ -57,11 +36,9 @@ void main() {
       radiance = texelFetch(environment, texel, 0).rgb;
       pdf = 1.0 / (4.0 * kPi);
     } else {
-      const vec2 row = invertMarginal(h, xi.x);
-      const uint j = uint(row.x);
-      const vec2 column = invertConditional(j * (w + 1u), w, xi.y);
-      const uvec2 texel = uvec2(uint(column.x), j);
-      d = envTexelDirection(texel, vec2(column.y, row.y), uvec2(w, h));
+      const vec4 drawn = envDrawTexel(xi, uvec2(w, h));
+      const uvec2 texel = uvec2(drawn.xy);
+      d = envTexelDirection(texel, drawn.zw, uvec2(w, h));
       radiance = texelFetch(environment, ivec2(texel), 0).rgb;
       pdf = envLuminance(radiance) / marginal[h + 1u];
     }

@@ -1,20 +1,27 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// A Lambertian sphere (shared/shading.h), through the water when the camera is under it.
+// A Lambertian sphere (shared/shading.h) with its glossy lobe (shared/glossy.h),
+// through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/objects.h"
 #include "lib/gbuffer.glsl"
+#include "lib/glossy_lookup.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Medium { CameraMedium medium; };
+layout(binding = 2) uniform sampler2D glossyMap;
 layout(push_constant) uniform Push { SphereParams params; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(objectRadiance(frame, params.albedo.rgb, n) * toCamera, 1.0);
-  writeGbuffer(frame, n, objectRadiance(withoutSun(frame), params.albedo.rgb, n) * toCamera);
+  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
+  const vec3 diffuse = objectRadiance(frame, params.albedo.rgb, n);
+  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera, 1.0);
+  // AO scales the Lambertian part's sky light only.
+  writeGbuffer(frame, n, glossyMix(objectRadiance(withoutSun(frame), params.albedo.rgb, n), vec3(0.0),
+                                   params.material.x) * toCamera);
 }

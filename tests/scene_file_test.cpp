@@ -85,6 +85,13 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"pool": {"brick_width": 0.01, "brick_height": 0.1, "mortar_fraction": 0.2}})")
                 .find("must be less than pool.brick_width"),
             std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"wall_specular": 1.5}})").find("pool.wall_specular = 1.500000 is outside [0"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"wall_roughness": -0.1}})").find("pool.wall_roughness"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"spheres": [{"specular": -1}]})").find("spheres[].specular"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"spheres": [{"roughness": 2}]})").find("spheres[].roughness"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"spheres": [{"roughness": "rough"}]})").find("spheres[0].roughness: expected a number"),
+            std::string::npos);
 }
 
 // Glass spheres: a material of the list, an index of refraction over 1 and

@@ -179,18 +179,24 @@ TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   }
 }
 
-// Two samplings times two sample counts: four rows. Bad widths, sample
-// counts and paths: one clean line, nothing written.
+// Two samplings times two sample counts: four rows; the glossy table, three
+// samplings times two counts times the 64-wide map's 3 levels. Bad widths,
+// sample counts and paths: one clean line, nothing written.
 TEST(BenchCli, IblBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;
-  const std::string csv = dir.file("ibl.csv");
-  ProcessResult r = runTidepool(
-      "bench ibl --validate --width 64 --samples 16,64 --rotations 2 --repeats 1 --csv " + csv + " --plot ''", dir);
+  const std::string csv = dir.file("ibl.csv"), glossyCsv = dir.file("glossy.csv");
+  ProcessResult r = runTidepool("bench ibl --validate --width 64 --samples 16,64 --rotations 2 --repeats 1 --csv " + csv +
+                                    " --plot '' --glossy-samples 16,64 --glossy-csv " + glossyCsv + " --glossy-plot ''",
+                                dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header.rfind("sampling,samples,sh_ms,cdf_ms,rms_error,", 0), 0u) << table.header;
   EXPECT_EQ(table.rows, 2 * 2);
+  const CsvShape glossy = csvShape(glossyCsv);
+  EXPECT_EQ(glossy.header.rfind("sampling,samples,level,exponent,prefilter_ms,rms_error,worst_error,", 0), 0u)
+      << glossy.header;
+  EXPECT_EQ(glossy.rows, 3 * 2 * 3);
   ScratchDir bad;
   for (const char* width : {"15", "17", "9000"}) {
     const std::string error =
@@ -199,6 +205,8 @@ TEST(BenchCli, IblBenchmarkWritesItsTableAndRefusesBadInput) {
   }
   expectCleanFailure("bench ibl --samples 0 --csv " + bad.file("x.csv"), bad, {});
   expectCleanFailure("bench ibl --csv /nonexistent/dir/x.csv", bad, {});
+  expectCleanFailure("bench ibl --glossy-samples 1 --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench ibl --csv " + bad.file("x.csv") + " --glossy-csv /nonexistent/dir/g.csv", bad, {});
 }
 
 }  // namespace tp::test

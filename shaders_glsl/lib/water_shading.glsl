@@ -1,5 +1,5 @@
 // The water surface's shading shared by its two refraction modes: inputs,
-// bindings 0-4 and 6, what a ray leaving the surface sees above it (the
+// bindings 0-4, 6 and 7, what a ray leaving the surface sees above it (the
 // spheres and boxes, the walls above the water, else the sky's
 // equirectangular lookup) and below it (the pool and the objects, cast
 // exactly, through the absorbing water), and Schlick's Fresnel.
@@ -8,6 +8,7 @@
 #include "shared/shading.h"
 #include "shared/objects.h"
 #include "shared/water_surface.h"
+#include "lib/glossy_lookup.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -17,6 +18,7 @@ layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform Objects { SceneObjects objects; };
 layout(binding = 6) uniform sampler2D caustics;
+layout(binding = 7) uniform sampler2D glossyMap;  // the glossy walls' and spheres' environment
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
@@ -32,10 +34,14 @@ vec3 radianceAbove(vec3 p, vec3 r) {
     nearest = sWall;
     // The wall's bricks point-sampled, as the reference tracer does: derivatives
     // are not to be had in this divergent branch.
-    radiance = poolWallRadiance(pool, frame, p + sWall * r, poolWallNormal(walls, r), vec2(0.0));
+    const vec3 wallNormal = poolWallNormal(walls, r);
+    radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0)), r,
+                              wallNormal, pool.wallGloss.xy);
   }
   const ObjectHit object = castObjects(objects, objects.count.xy, p, r, nearest);
-  return object.distance > 0.0 ? objectRadiance(frame, object.albedo, object.normal) : radiance;
+  return object.distance > 0.0
+             ? glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), r, object.normal, object.material)
+             : radiance;
 }
 
 // What a ray leaving the surface at p downwards sees: the pool (walls, and the
@@ -45,12 +51,14 @@ vec3 radianceBelow(vec3 p, vec3 t) {
   const PoolHit hit = tracePool(pool, p, t);
   vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz),
                                                 texture(caustics, causticsUv(pool, hit.position.xz)).r)
-                            : poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0));
+                            : glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0)),
+                                             t, hit.normal, pool.wallGloss.xy);
   float distance = hit.distance;
   const ObjectHit object = castObjects(objects, objects.count.zw, p, t, distance);
   if (object.distance > 0.0) {
     distance = object.distance;
-    radiance = objectRadiance(frame, object.albedo, object.normal);
+    radiance = glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), t, object.normal,
+                              object.material);
   }
   return radiance * exp(-surface.absorption.rgb * distance);
 }

@@ -53,6 +53,12 @@ TP_INLINE vec3 envTexelDirection(uvec2 texel, vec2 f, uvec2 size) {
   return equirectToDirectionCos(u, cosTheta);
 }
 
+// The texel holding unit direction d (the sampler's piecewise-constant environment).
+TP_INLINE uvec2 envTexelOf(vec3 d, uvec2 size) {
+  vec2 uv = directionToEquirect(d);
+  return uvec2(min(ivec2(uv * vec2(size)), ivec2(size) - 1));
+}
+
 // The change of variables from the density of (u, v) on the unit square to
 // the density per steradian: d omega = 2 pi^2 sin(theta) du dv.
 TP_INLINE float envSolidAnglePdf(float pdfUv, float sinTheta) { return pdfUv / (2.0f * kPi * kPi * sinTheta); }

@@ -19,7 +19,9 @@
 TP_BEGIN
 
 // Push constants of both glass passes, one draw per glass sphere. The first
-// 48 bytes are SphereParams, so sphere.vert tessellates it unchanged.
+// 48 bytes are laid out as SphereParams' (the sphere, albedo and tessellation
+// sphere.vert reads), so sphere.vert tessellates it unchanged; the glass
+// fields take the place of the Lambertian sphere's material.
 struct GlassSphereParams {
   vec4 sphere;         // xyz centre, w radius
   vec4 albedo;         // unused (SphereParams' place)

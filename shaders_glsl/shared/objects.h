@@ -18,6 +18,7 @@ struct SceneObjects {
   uvec4 count;
   vec4 spheres[TP_MAX_SPHERES];         // xyz centre, w radius
   vec4 sphereAlbedo[TP_MAX_SPHERES];    // rgb
+  vec4 sphereMaterial[TP_MAX_SPHERES];  // x: specular, y: roughness (shared/glossy.h)
   vec4 boxCenter[TP_MAX_BOXES];         // xyz centre, w yaw (radians, about +y, from +x towards -z)
   vec4 boxHalfSize[TP_MAX_BOXES];       // xyz half the edge lengths in the box's own frame
   vec4 boxAlbedo[TP_MAX_BOXES];         // rgb
@@ -28,6 +29,7 @@ struct SphereParams {
   vec4 sphere;   // xyz centre, w radius
   vec4 albedo;   // rgb
   uvec4 tessellation;  // x: stacks, y: slices
+  vec4 material;  // x: specular, y: roughness (shared/glossy.h)
 };
 
 // Push constants of the box pass: one draw per box.
@@ -85,6 +87,7 @@ struct ObjectHit {
   float distance;  // -1: none nearer than the limit
   vec3 normal;     // unit, world
   vec3 albedo;
+  vec2 material;   // x: specular, y: roughness; boxes have none
 };
 
 // The nearest sphere or box along origin + s dir (dir unit) with s < limit,
@@ -95,6 +98,7 @@ TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin,
   hit.distance = -1.0f;
   hit.normal = vec3(0.0f);
   hit.albedo = vec3(0.0f);
+  hit.material = vec2(0.0f);
   float nearest = limit;
   for (uint i = 0u; i < counts.x; ++i) {
     float s = raySphere(origin, dir, objects.spheres[i]);
@@ -103,6 +107,7 @@ TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin,
       hit.distance = s;
       hit.normal = normalize(origin + s * dir - vec3(objects.spheres[i]));
       hit.albedo = vec3(objects.sphereAlbedo[i]);
+      hit.material = vec2(objects.sphereMaterial[i]);
     }
   }
   for (uint i = 0u; i < counts.y; ++i) {
@@ -112,6 +117,7 @@ TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin,
       hit.distance = b.x;
       hit.normal = vec3(b.y, b.z, b.w);
       hit.albedo = vec3(objects.boxAlbedo[i]);
+      hit.material = vec2(0.0f);
     }
   }
   return hit;
@@ -120,8 +126,8 @@ TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin,
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::SceneObjects) == 16 + 32 * TP_MAX_SPHERES + 48 * TP_MAX_BOXES);
-static_assert(sizeof(tp::shader::SphereParams) == 48);
+static_assert(sizeof(tp::shader::SceneObjects) == 16 + 48 * TP_MAX_SPHERES + 48 * TP_MAX_BOXES);
+static_assert(sizeof(tp::shader::SphereParams) == 64);
 static_assert(sizeof(tp::shader::BoxParams) == 48);
 #endif
 

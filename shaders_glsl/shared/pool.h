@@ -19,6 +19,7 @@ struct PoolParams {
   vec4 brick;         // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights
   vec4 brickAlbedo;   // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
   vec4 mortarAlbedo;  // rgb; w unused
+  vec4 wallGloss;     // x: the walls' specular, y: their roughness (shared/glossy.h)
 };
 
 // Bricks' tones vary by up to this fraction, one tone per brick, so that
@@ -76,7 +77,7 @@ TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.b
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 160);
+static_assert(sizeof(tp::shader::PoolParams) == 176);
 #endif
 
 #endif

@@ -77,7 +77,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   frame->add_option("--plot", o.frame.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
   addGpuOptions(frame, o.frame.validate, o.frame.device);
   CLI::App* ibl = bench->add_subcommand(
-      "ibl", "Sky irradiance (SH9) by importance and by uniform sampling: samples against error against GPU ms");
+      "ibl", "Sky irradiance (SH9) by importance and by uniform sampling, and the glossy prefilter by environment, lobe and "
+             "MIS sampling: samples against error against GPU ms");
   ibl->add_option("--scene", o.ibl.scenePath, "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
@@ -92,6 +93,15 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       ->check(CLI::Range(1u, 1000u));
   ibl->add_option("--csv", o.ibl.csv, "CSV output")->type_name("PATH")->capture_default_str();
   ibl->add_option("--plot", o.ibl.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  ibl->add_option("--glossy-samples", o.ibl.glossySamples,
+                  "Glossy prefilter samples per texel to measure (MIS: half from the environment, half from the lobe)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(2u, 65536u));
+  ibl->add_option("--glossy-csv", o.ibl.glossyCsv, "CSV output of the glossy prefilter")->type_name("PATH")->capture_default_str();
+  ibl->add_option("--glossy-plot", o.ibl.glossyPlot, "PNG plot of the glossy prefilter (empty: none)")
+      ->type_name("PATH")
+      ->capture_default_str();
   addGpuOptions(ibl, o.ibl.validate, o.ibl.device);
   CLI::App* glass = bench->add_subcommand(
       "glass", "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");

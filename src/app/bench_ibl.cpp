@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/bench_ibl_glossy.hpp"
 #include "app/bench_output.hpp"
 #include "app/gpu_session.hpp"
 #include "gpu/submit.hpp"
@@ -17,6 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "render/env_prefilter.hpp"
 #include "render/env_sh.hpp"
+#include "render/sky_image.hpp"
 #include "render/sky_model.hpp"
 #include "scene/scene_file.hpp"
 #include "shared/equirect.h"
@@ -24,21 +26,6 @@
 
 namespace tp::app {
 namespace {
-
-// The sky texture the sky pass fills (sun included), as the half floats it holds.
-render::SkyImage proceduralSky(const scene::Sky& sky, uint32_t width) {
-  const uint32_t height = width / 2;
-  const shader::SkyParams params = render::skyParams(sky);
-  render::SkyImage image{width, height, std::vector<glm::vec4>(size_t(width) * height)};
-  for (uint32_t j = 0; j < height; ++j) {
-    for (uint32_t i = 0; i < width; ++i) {
-      const glm::vec3 d = shader::equirectToDirection({(i + 0.5f) / width, (j + 0.5f) / height});
-      const glm::vec3 l = glm::min(shader::skyRadiance(params, d, 1.0f), glm::vec3(65504.0f));
-      image.texels[size_t(j) * width + i] = glm::vec4(glm::unpackHalf4x16(glm::packHalf4x16(glm::vec4(l, 1.0f))));
-    }
-  }
-  return image;
-}
 
 // The worst irradiance error over the normals, relative to the brightest normal's irradiance.
 double irradianceError(const shader::Sh9& estimate, const shader::Sh9& exact, const std::vector<glm::vec3>& normals) {
@@ -61,13 +48,14 @@ struct Row {
 
 int runBenchIbl(const BenchIblOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
+  if (!o.glossySamples.empty()) checkBenchOutputs(o.glossyCsv, o.glossyPlot);
   if (o.width < 16 || o.width > 8192 || o.width % 2) {
     throw std::runtime_error("bench ibl: --width " + std::to_string(o.width) + " is not even and 16 to 8192");
   }
   const scene::Scene s = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
-  const render::SkyImage image = proceduralSky(s.sky, o.width);
+  const render::SkyImage image = render::proceduralSkyImage(s.sky, o.width);
   const auto start = std::chrono::steady_clock::now();
   const shader::Sh9 exact = render::projectSh9(image, glm::pi<float>());
   const double projectionMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -126,6 +114,7 @@ int runBenchIbl(const BenchIblOptions& o) {
         << ",\"" << ctx.deviceName() << "\"\n";
   }
   commitBenchCsv(csvFile, csv, "plot_bench_ibl.py", o.plot);
+  benchGlossyPrefilter(ctx, image, o);
   return session.finish();
 }
 

@@ -13,6 +13,11 @@ struct BenchIblOptions {
   uint32_t repeats = 5;    // timed CDF builds (the median is reported; the SH estimate: over the rotations)
   std::string csv = "bench_ibl.csv";
   std::string plot = "bench_ibl.png";
+  // The glossy prefilter (render/glossy_prefilter): samples per texel, split
+  // between environment and lobe (MIS) or all of one kind; empty: not measured.
+  std::vector<uint32_t> glossySamples{16, 64, 128, 256, 1024};
+  std::string glossyCsv = "bench_ibl_glossy.csv";
+  std::string glossyPlot = "bench_ibl_glossy.png";
   bool validate = false;
   std::string device;
 };
@@ -24,6 +29,11 @@ struct BenchIblOptions {
 // build against the error of the irradiance from the exact texel-by-texel
 // projection (worst over 100 normals, relative to the brightest, RMS over
 // the rotations); and the CPU ms of that exact projection. A table, CSV and a plot.
+// Then the glossy prefilter of the same sky (its map at most 512 wide):
+// per sampling strategy and samples per texel, the GPU ms of the whole map
+// (CDFs and every level) against each level's error from the exact
+// quadrature (render/glossy_quadrature) at 256 texels of the level. A
+// second table, CSV and plot.
 int runBenchIbl(const BenchIblOptions& options);
 
 }  // namespace tp::app

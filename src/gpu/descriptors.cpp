@@ -28,6 +28,12 @@ DescriptorWrites& DescriptorWrites::storageImage(uint32_t binding, const Image& 
   return *this;
 }
 
+DescriptorWrites& DescriptorWrites::storageImageLevel(uint32_t binding, const Image& image, uint32_t level) {
+  images_.push_back({nullptr, *image.levelViews.at(level), vk::ImageLayout::eGeneral});
+  add(binding, vk::DescriptorType::eStorageImage).writes_.back().pImageInfo = &images_.back();
+  return *this;
+}
+
 DescriptorWrites& DescriptorWrites::sampledImage(uint32_t binding, const Image& image, vk::Sampler sampler) {
   images_.push_back({sampler, *image.view, vk::ImageLayout::eShaderReadOnlyOptimal});
   add(binding, vk::DescriptorType::eCombinedImageSampler).writes_.back().pImageInfo = &images_.back();

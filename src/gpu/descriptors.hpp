@@ -32,6 +32,8 @@ class DescriptorWrites {
   DescriptorWrites& storageBuffer(uint32_t binding, const Buffer& buffer);
   DescriptorWrites& uniformBuffer(uint32_t binding, const Buffer& buffer);
   DescriptorWrites& storageImage(uint32_t binding, const Image& image);
+  // One mip level of an image made with several (Image::levelViews).
+  DescriptorWrites& storageImageLevel(uint32_t binding, const Image& image, uint32_t level);
   DescriptorWrites& sampledImage(uint32_t binding, const Image& image, vk::Sampler sampler);
 
   // Checks the writes against the pipeline, then allocates and writes a set.

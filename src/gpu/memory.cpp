@@ -79,7 +79,7 @@ Buffer createBuffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlag
 }
 
 Image createImage2D(const Context& ctx, vk::Extent2D extent, vk::Format format, vk::ImageUsageFlags usage,
-                    const std::string& what) {
+                    const std::string& what, uint32_t mipLevels) {
   const uint32_t maxDim = ctx.limits().maxImageDimension2D;
   if (extent.width == 0 || extent.height == 0 || extent.width > maxDim || extent.height > maxDim) {
     throw std::runtime_error(what + ": size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
@@ -88,12 +88,13 @@ Image createImage2D(const Context& ctx, vk::Extent2D extent, vk::Format format, 
   Image img;
   img.format = format;
   img.extent = extent;
+  img.mipLevels = mipLevels;
   img.aspect = isFormatDepth(format) ? vk::ImageAspectFlagBits::eDepth : vk::ImageAspectFlagBits::eColor;
   img.image = vk::raii::Image(ctx.device(), vk::ImageCreateInfo{
                                                 .imageType = vk::ImageType::e2D,
                                                 .format = format,
                                                 .extent = vk::Extent3D{extent.width, extent.height, 1},
-                                                .mipLevels = 1,
+                                                .mipLevels = mipLevels,
                                                 .arrayLayers = 1,
                                                 .samples = vk::SampleCountFlagBits::e1,
                                                 .tiling = vk::ImageTiling::eOptimal,
@@ -106,8 +107,16 @@ Image createImage2D(const Context& ctx, vk::Extent2D extent, vk::Format format, 
                                                    .image = *img.image,
                                                    .viewType = vk::ImageViewType::e2D,
                                                    .format = format,
-                                                   .subresourceRange = {img.aspect, 0, 1, 0, 1},
+                                                   .subresourceRange = {img.aspect, 0, mipLevels, 0, 1},
                                                });
+  for (uint32_t level = 0; mipLevels > 1 && level < mipLevels; ++level) {
+    img.levelViews.emplace_back(ctx.device(), vk::ImageViewCreateInfo{
+                                                  .image = *img.image,
+                                                  .viewType = vk::ImageViewType::e2D,
+                                                  .format = format,
+                                                  .subresourceRange = {img.aspect, level, 1, 0, 1},
+                                              });
+  }
   return img;
 }
 

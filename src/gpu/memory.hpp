@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "gpu/context.hpp"
 
@@ -38,11 +39,16 @@ struct Image {
   vk::Format format = vk::Format::eUndefined;
   vk::Extent2D extent;
   vk::ImageAspectFlags aspect;
+  uint32_t mipLevels = 1;
+  // With more than one level: a view of each level alone, for storage writes
+  // (`view` sees them all, for sampling).
+  std::vector<vk::raii::ImageView> levelViews;
 
   vk::Image handle() const { return *image; }
 };
 
+// `mipLevels`: level k is extent / 2^k (at least 1 texel); the caller fills them.
 Image createImage2D(const Context& ctx, vk::Extent2D extent, vk::Format format, vk::ImageUsageFlags usage,
-                    const std::string& what);
+                    const std::string& what, uint32_t mipLevels = 1);
 
 }  // namespace tp::gpu

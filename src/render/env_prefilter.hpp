@@ -31,6 +31,9 @@ class EnvPrefilter {
   // luminance's integral.
   std::vector<float> conditional() const;
   std::vector<float> marginal() const;
+  // The CDF buffers themselves, for passes that draw from them (glossy_prefilter.comp).
+  const gpu::Buffer& conditionalBuffer() const { return conditional_; }
+  const gpu::Buffer& marginalBuffer() const { return marginal_; }
 
  private:
   const gpu::Context& ctx_;

@@ -22,6 +22,7 @@ shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   for (size_t i = 0; i < spheres.size(); ++i) {
     objects.spheres[i] = glm::vec4(spheres[i].center, spheres[i].radius);
     objects.sphereAlbedo[i] = glm::vec4(spheres[i].albedo, 0.0f);
+    objects.sphereMaterial[i] = glm::vec4(spheres[i].specular, spheres[i].roughness, 0.0f, 0.0f);
   }
   for (size_t i = 0; i < boxes.size(); ++i) {
     const shader::BoxParams box = boxParams(boxes[i]);
@@ -54,7 +55,7 @@ scene::Mesh boxMesh(const scene::Box& box, const std::string& name) {
 
 shader::SphereParams sphereParams(const scene::Sphere& sphere) {
   return {glm::vec4(sphere.center, sphere.radius), glm::vec4(sphere.albedo, 0.0f),
-          glm::uvec4(kSphereStacks, kSphereSlices, 0u, 0u)};
+          glm::uvec4(kSphereStacks, kSphereSlices, 0u, 0u), glm::vec4(sphere.specular, sphere.roughness, 0.0f, 0.0f)};
 }
 
 shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps) {

@@ -88,7 +88,7 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
   gpu::DescriptorWrites wallWrites;
   wallWrites.uniformBuffer(0, frameUniforms).uniformBuffer(1, *pool.uniforms);
-  if (medium) wallWrites.uniformBuffer(3, *medium);
+  if (medium) wallWrites.uniformBuffer(3, *medium).sampledImage(4, *pool.glossy.image, pool.glossy.sampler);
   wallWrites.bind(cmd, walls, arena);
   gpu::draw(cmd, kWallVertices);
   gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
@@ -117,15 +117,17 @@ gpu::GraphicsPipelineDesc opaque(const std::string& vertexShader, const std::str
 }  // namespace
 
 // `medium`: none for the AOV pass.
+// `glossy`: the spheres' environment (none for the AOV pass).
 static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& spheres,
                         const gpu::Pipeline& boxes, const gpu::Buffer& frameUniforms, const gpu::Buffer* medium,
-                        const std::vector<shader::SphereParams>& sphereDraws,
+                        const GlossyDraw* glossy, const std::vector<shader::SphereParams>& sphereDraws,
                         const std::vector<shader::BoxParams>& boxDraws) {
   auto bindShared = [&](const gpu::Pipeline& pipeline) {
     cmd.bindPipeline(pipeline.bindPoint, *pipeline.pipeline);
     gpu::DescriptorWrites writes;
     writes.uniformBuffer(0, frameUniforms);
     if (medium) writes.uniformBuffer(1, *medium);
+    if (glossy && gpu::hasBinding(pipeline, 2)) writes.sampledImage(2, *glossy->image, glossy->sampler);
     writes.bind(cmd, pipeline, arena);
   };
   if (!sphereDraws.empty()) {
@@ -150,13 +152,16 @@ ObjectPass::ObjectPass(const gpu::Context& ctx, bool gbuffer)
       boxPipeline(gpu::createGraphicsPipeline(ctx, opaque("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
 
 void ObjectPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms,
-                         const MediumDraw& medium, const std::vector<shader::SphereParams>* spheres,
+                         const MediumDraw& medium, const GlossyDraw& glossy,
+                         const std::vector<shader::SphereParams>* spheres,
                          const std::vector<shader::BoxParams>* boxes) const {
   auto uses = surfaceUses(targets, false);
   uses.push_back({medium.ref, Use::FragmentUniformRead});
-  graph.pass("objects", std::move(uses), [this, targets, &frameUniforms, medium, spheres, boxes](PassContext& pc) {
+  uses.push_back({glossy.ref, Use::FragmentSample});
+  graph.pass("objects", std::move(uses), [this, targets, &frameUniforms, medium, glossy, spheres, boxes](PassContext& pc) {
     drawSurfaces(pc.cmd, targets, false, [&] {
-      drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, *spheres, *boxes);
+      drawObjects(pc.cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, medium.buffer, &glossy, *spheres,
+                  *boxes);
     });
   }, {.cached = false, .runIf = [spheres, boxes] { return !spheres->empty() || !boxes->empty(); }});
 }
@@ -170,6 +175,7 @@ void PoolPass::declare(FrameGraph& graph, const SurfaceTargets& targets, const g
   auto uses = surfaceUses(targets, false);
   uses.push_back({pool.causticsRef, Use::FragmentSample});
   uses.push_back({medium.ref, Use::FragmentUniformRead});
+  uses.push_back({pool.glossy.ref, Use::FragmentSample});
   graph.pass("pool", std::move(uses), [this, targets, &frameUniforms, pool, medium](PassContext& pc) {
     drawSurfaces(pc.cmd, targets, false,
                  [&] { drawPool(pc.cmd, pc.descriptors, walls, floor, frameUniforms, pool, medium.buffer); });
@@ -261,6 +267,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
   for (ResourceRef r : water.stateRefs) uses.push_back({r, Use::VertexStorageRead});
   if (underwater) uses.push_back({underwater->ref, Use::FragmentSample});
   uses.push_back({pool.causticsRef, Use::FragmentSample});  // the floor the refracted (or, from below, reflected) rays meet
+  uses.push_back({pool.glossy.ref, Use::FragmentSample});    // the glossy walls and spheres they meet
   graph.pass("water", std::move(uses),
              [this, &color, &depth, water, pool, &sky, sampler, &frameUniforms, underwater](PassContext& pc) {
     const auto& cmd = pc.cmd;
@@ -275,6 +282,7 @@ void WaterSurfacePass::declare(FrameGraph& graph, ResourceRef colorRef, const gp
             .uniformBuffer(4, *pool.objects);
         if (underwater && gpu::hasBinding(*side, 5)) writes.sampledImage(5, *underwater->image, underwater->sampler);
         writes.sampledImage(6, *pool.caustics, pool.causticsSampler);
+        if (gpu::hasBinding(*side, 7)) writes.sampledImage(7, *pool.glossy.image, pool.glossy.sampler);
         writes.bind(cmd, *side, pc.descriptors);
         drawWater(cmd, water);
       }
@@ -375,7 +383,7 @@ void AovPass::declare(FrameGraph& graph, ResourceRef normalRef, const gpu::Image
                gpu::DescriptorWrites().uniformBuffer(0, frameUniforms).bind(cmd, groundPipeline, pc.descriptors);
                gpu::draw(cmd, kGroundVertices);
                if (poolDraw) drawPool(cmd, pc.descriptors, *wallsPipeline, *floorPipeline, frameUniforms, *poolDraw, nullptr);
-               drawObjects(cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, nullptr, *spheres, *boxes);
+               drawObjects(cmd, pc.descriptors, spherePipeline, boxPipeline, frameUniforms, nullptr, nullptr, *spheres, *boxes);
                if (waterDraw) {
                  gpu::bindPipeline(cmd, *waterPipeline, waterDraw->params);
                  gpu::DescriptorWrites()

@@ -74,6 +74,14 @@ struct MediumDraw {
   const gpu::Buffer* buffer = nullptr;
 };
 
+// The glossy environment the glossy surfaces reflect (shared/glossy.h): the
+// prefilter's map, or one black texel where the scene has no glossy surface.
+struct GlossyDraw {
+  ResourceRef ref;
+  const gpu::Image* image = nullptr;
+  vk::Sampler sampler;  // trilinear: textureLod blends two levels
+};
+
 // What a pass needs to draw the pool: its uniform buffer and the floor grid's indices.
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
@@ -86,6 +94,7 @@ struct PoolDraw {
   ResourceRef causticsRef;
   const gpu::Image* caustics = nullptr;
   vk::Sampler causticsSampler;
+  GlossyDraw glossy;  // for the walls and the spheres the water's rays meet
 };
 
 // Graphics: the pool's inner walls and its terrain floor.
@@ -102,7 +111,8 @@ struct PoolPass {
 struct ObjectPass {
   ObjectPass(const gpu::Context& ctx, bool gbuffer);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const gpu::Buffer& frameUniforms, const MediumDraw& medium,
-               const std::vector<shader::SphereParams>* spheres, const std::vector<shader::BoxParams>* boxes) const;
+               const GlossyDraw& glossy, const std::vector<shader::SphereParams>* spheres,
+               const std::vector<shader::BoxParams>* boxes) const;
   gpu::Pipeline spherePipeline, boxPipeline;
 };
 

@@ -18,6 +18,7 @@ shader::PoolParams poolParams(const scene::Scene& scene) {
                 0.5f * p.mortarFraction},
       .brickAlbedo = glm::vec4(p.brickAlbedo, p.dirt),
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
+      .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
   };
 }
 

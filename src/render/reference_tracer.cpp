@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "render/frame_uniforms.hpp"
+#include "render/glossy_model.hpp"
+#include "render/glossy_quadrature.hpp"
 #include "render/hammersley.hpp"
 #include "render/pool_model.hpp"
 #include "render/reference_scene.hpp"
@@ -16,6 +18,7 @@
 #include "render/water_model.hpp"
 #include "shared/glass.h"
 #include "shared/objects.h"
+#include "shared/glossy.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
 
@@ -70,6 +73,8 @@ class Tracer {
         absorption_(scene.water.absorption),
         ior_(scene.water.ior) {
     if (hasPool(scene)) pool_ = poolParams(scene);
+    // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
+    if (hasGlossySurface(scene)) glossySky_ = skyImage_ ? *skyImage_ : proceduralSkyImage(scene.sky, scene.sky.textureWidth);
     const float time = float(frame) * scene.water.frameTime;
     const scene::Scene placed = scene::sceneAt(scene, time);
     std::vector<scene::Mesh> traced;
@@ -124,7 +129,8 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * shader::objectRadiance(uniforms_, sphere.albedo, n);
+      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n), dir, n,
+                                    glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -136,7 +142,8 @@ class Tracer {
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f));
+        return transmittance * glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f)), dir, n,
+                                      glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
@@ -171,6 +178,14 @@ class Tracer {
     const glm::vec3 exit = p - 2.0f * glm::dot(p - glass.center, inside) * inside;
     const glm::vec3 leaving = shader::glassExitDirection(inside, glm::normalize(exit - glass.center), glass.ior);
     return glm::mix(sky(leaving), sky(glm::reflect(dir, n)), reflectance);
+  }
+
+  // A surface's radiance with its glossy lobe (material: specular, roughness)
+  // about the mirror direction of `dir` in n: G exactly, by quadrature.
+  glm::vec3 glossy(glm::vec3 diffuse, glm::vec3 dir, glm::vec3 n, glm::vec2 material) const {
+    if (material.x <= 0.0f) return diffuse;
+    const glm::dvec3 g = GlossyQuadrature(*glossySky_).radiance(glm::reflect(dir, n), shader::glossyExponent(material.y));
+    return shader::glossyMix(diffuse, glm::vec3(g), material.x);
   }
 
   // Both branches at the surface, weighted by the exact Fresnel reflectance.
@@ -209,6 +224,7 @@ class Tracer {
   shader::FrameUniforms uniforms_;
   shader::SkyParams sky_;
   std::optional<SkyImage> skyImage_;
+  std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
   shader::GroundParams ground_;
   shader::PoolParams pool_{};
   uint32_t maxSpecular_;

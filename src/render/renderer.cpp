@@ -10,6 +10,8 @@
 #include "render/frame_uniforms.hpp"
 #include "render/frustum.hpp"
 #include "render/glass_passes.hpp"
+#include "render/glossy_model.hpp"
+#include "render/glossy_prefilter.hpp"
 #include "render/water_sleep.hpp"
 #include "render/passes.hpp"
 #include "render/sky_model.hpp"
@@ -55,6 +57,13 @@ struct Renderer::Resources {
                                                          .addressModeU = vk::SamplerAddressMode::eClampToEdge,
                                                          .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                          .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+        glossySampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
+                                                          .minFilter = vk::Filter::eLinear,
+                                                          .mipmapMode = vk::SamplerMipmapMode::eLinear,
+                                                          .addressModeU = vk::SamplerAddressMode::eRepeat,
+                                                          .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                          .addressModeW = vk::SamplerAddressMode::eClampToEdge,
+                                                          .maxLod = VK_LOD_CLAMP_NONE}),
         color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
@@ -105,6 +114,17 @@ struct Renderer::Resources {
                                vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled, "sky texture");
       light = proceduralSkyLight(scene.sky);
       skyRef = graph.image("sky", sky);
+    }
+    // The glossy surfaces' environment, prefiltered from the sky by a cached
+    // pass (on the first frame, and again only if the sky changes); without
+    // glossy surfaces no pass, and one black texel for the shaders to bind.
+    if (hasGlossySurface(scene)) {
+      glossyPrefilter.emplace(ctx, sky.extent.width, sky.extent.height);
+      glossy = {graph.image("glossy environment", glossyPrefilter->map()), &glossyPrefilter->map(), *glossySampler};
+    } else {
+      noGlossy = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(0.0f)}}, "no glossy environment");
+      glossy = {graph.image("glossy environment", noGlossy, vk::ImageLayout::eShaderReadOnlyOptimal), &noGlossy,
+                *glossySampler};
     }
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
@@ -165,7 +185,7 @@ struct Renderer::Resources {
       objectUniforms = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
                                          gpu::MemoryUse::Upload, "scene objects");
       poolDraw = PoolDraw{&poolUniforms, &objectUniforms, &floorIndices, uint32_t(floorGridIndices.size()), kPoolFloorGrid,
-                          {}, &causticsImage, *clampSampler};
+                          {}, &causticsImage, *clampSampler, glossy};
       if (scene.render.caustics) {
         causticsImage = gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
                                            vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
@@ -180,6 +200,7 @@ struct Renderer::Resources {
       }
     }
     if (!skyFromImage) skyPass.declare(graph, skyRef, sky, skyParams(scene.sky));
+    if (glossyPrefilter) glossyPrefilter->declare(graph, skyRef, sky, *sampler, glossy.ref);
     backgroundPass.declare(graph, colorRef, color, skyRef, sky, *sampler, uniforms);
     groundPass.declare(graph, surfaces, uniforms, ground);
     if (poolDraw) {
@@ -189,7 +210,7 @@ struct Renderer::Resources {
     // `spheres` and `boxes`: those in view, filled by render().
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
       objectPass.emplace(ctx, gbuffer);
-      objectPass->declare(graph, surfaces, uniforms, mediumDraw, &spheres, &boxes);
+      objectPass->declare(graph, surfaces, uniforms, mediumDraw, glossy, &spheres, &boxes);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too.
@@ -331,11 +352,14 @@ struct Renderer::Resources {
   BackgroundPass backgroundPass;
   GroundPass groundPass;
   TonemapPass tonemapPass;
-  vk::raii::Sampler sampler, nearestSampler, clampSampler;
+  vk::raii::Sampler sampler, nearestSampler, clampSampler, glossySampler;
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
   SkyLight light;
+  std::optional<GlossyPrefilter> glossyPrefilter;  // when the scene has a glossy surface
+  gpu::Image noGlossy;                             // else one black texel
+  GlossyDraw glossy;
   // The water, when the scene has it: the stepper, the grid's index buffer,
   // and the steps the next frame takes to reach its frame number.
   std::optional<sim::GpuStepper> water;

@@ -12,6 +12,7 @@
 #include "io/image_io.hpp"
 #include "render/env_sh.hpp"
 #include "shared/shading.h"
+#include "shared/sky.h"
 
 namespace tp::render {
 
@@ -48,6 +49,20 @@ glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d) {
   };
   const int64_t i = int64_t(x0), j = int64_t(y0);
   return glm::mix(glm::mix(texel(i, j), texel(i + 1, j), fx), glm::mix(texel(i, j + 1), texel(i + 1, j + 1), fx), fy);
+}
+
+SkyImage proceduralSkyImage(const scene::Sky& sky, uint32_t width) {
+  const uint32_t height = width / 2;
+  const shader::SkyParams params = skyParams(sky);
+  SkyImage image{width, height, std::vector<glm::vec4>(size_t(width) * height)};
+  for (uint32_t j = 0; j < height; ++j) {
+    for (uint32_t i = 0; i < width; ++i) {
+      const glm::vec3 d = shader::equirectToDirection({(i + 0.5f) / width, (j + 0.5f) / height});
+      const glm::vec3 l = glm::min(shader::skyRadiance(params, d, 1.0f), glm::vec3(65504.0f));
+      image.texels[size_t(j) * width + i] = glm::vec4(glm::unpackHalf4x16(glm::packHalf4x16(glm::vec4(l, 1.0f))));
+    }
+  }
+  return image;
 }
 
 gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name) {

@@ -25,6 +25,10 @@ SkyLight skyImageLight(const SkyImage& image);
 // around in u and clamped in v, as the renderer's sampler reads the texture.
 glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d);
 
+// The texture the sky pass fills from the procedural sky (sun included),
+// `width` x width / 2 texels at their centres, as the half floats it holds.
+SkyImage proceduralSkyImage(const scene::Sky& sky, uint32_t width);
+
 // A half-float sampled texture holding the image, left in the shader-read layout.
 gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name = "sky image texture");
 

@@ -143,6 +143,8 @@ void validateScene(const Scene& s) {
   requireRange(s.pool.tileSize, 1e-4f, 1e3f, "pool.tile_size");
   requireNonNegative(s.pool.tileAlbedoA, "pool.tile_albedo_a");
   requireNonNegative(s.pool.tileAlbedoB, "pool.tile_albedo_b");
+  requireRange(s.pool.wallSpecular, 0.0f, 1.0f, "pool.wall_specular");
+  requireRange(s.pool.wallRoughness, 0.0f, 1.0f, "pool.wall_roughness");
   requireRange(s.terrain.amplitude, 0.0f, 2.0f * s.pool.depth, "terrain.amplitude");
   requireRange(s.terrain.frequency, 0.0f, 1e3f, "terrain.frequency");
   requireRange(float(s.terrain.octaves), 1.0f, 16.0f, "terrain.octaves");
@@ -162,6 +164,8 @@ void validateScene(const Scene& s) {
     if (!(sphere.ior > 1.0f && sphere.ior <= 3.0f)) {
       throw std::runtime_error("spheres[].ior = " + std::to_string(sphere.ior) + " is outside (1, 3]");
     }
+    requireRange(sphere.specular, 0.0f, 1.0f, "spheres[].specular");
+    requireRange(sphere.roughness, 0.0f, 1.0f, "spheres[].roughness");
     for (size_t k = 0; k < sphere.path.size(); ++k) {
       requireFinite(sphere.path[k].center, "spheres[].path[].center");
       requireRange(sphere.path[k].time, 0.0f, 1e6f, "spheres[].path[].time");

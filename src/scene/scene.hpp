@@ -84,6 +84,8 @@ struct Pool {
   float tileSize = 0.25f;
   glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
   glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};
+  float wallSpecular = 0.0f;   // the walls' glossy lobe's share (shared/glossy.h)
+  float wallRoughness = 0.5f;
   bool operator==(const Pool&) const = default;
 };
 
@@ -111,6 +113,8 @@ struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
   glm::vec3 albedo{0.8f, 0.3f, 0.2f};  // of a lambert sphere
+  float specular = 0.0f;   // the glossy lobe's share, 0 (Lambertian) to 1 (shared/glossy.h)
+  float roughness = 0.5f;  // of the glossy lobe, 0 (sharpest) to 1 (a cosine lobe)
   std::vector<Keyframe> path = {};
   std::string material = "lambert";    // lambert | glass
   float ior = 1.5f;                    // of a glass sphere, in (1, 3]

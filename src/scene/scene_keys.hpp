@@ -84,6 +84,8 @@ void visitScene(V& v, Scene& s) {
     r.number("tile_size", s.pool.tileSize);
     r.color("tile_albedo_a", s.pool.tileAlbedoA);
     r.color("tile_albedo_b", s.pool.tileAlbedoB);
+    r.number("wall_specular", s.pool.wallSpecular);
+    r.number("wall_roughness", s.pool.wallRoughness);
   });
   v.object("terrain", [&](auto& r) {
     r.number("amplitude", s.terrain.amplitude);
@@ -96,6 +98,8 @@ void visitScene(V& v, Scene& s) {
     r.vec3("center", sphere.center);
     r.number("radius", sphere.radius);
     r.color("albedo", sphere.albedo);
+    r.number("specular", sphere.specular);
+    r.number("roughness", sphere.roughness);
     r.objects("path", sphere.path, [](auto& k, scene::Keyframe& key) {
       k.number("time", key.time);
       k.vec3("center", key.center);
