@@ -26,7 +26,7 @@ void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeli
                  const std::vector<shader::GlassSphereParams>& spheres) {
   for (const auto& sphere : spheres) {
     gpu::bindPipeline(cmd, pipeline, sphere);
-    gpu::draw(cmd, sphere.tessellation.x * sphere.tessellation.y * 6);
+    gpu::draw(cmd, sphereVertexCount(sphere.tessellation));
   }
 }
 

@@ -11,8 +11,10 @@ namespace tp::render {
 // Tessellation of every sphere, in the shader and in exported meshes alike.
 inline constexpr uint32_t kSphereStacks = 32;
 inline constexpr uint32_t kSphereSlices = 64;
-inline constexpr uint32_t kSphereVertices = kSphereStacks * kSphereSlices * 6;
 inline constexpr uint32_t kBoxVertices = 36;  // box.vert: six faces of two triangles
+// The vertices sphere.vert draws for a tessellation (x stacks, y slices of
+// SphereParams or GlassSphereParams): two triangles a cell.
+inline uint32_t sphereVertexCount(glm::uvec4 tessellation) { return tessellation.x * tessellation.y * 6; }
 
 // The one place where the scene's objects become shader parameters. Objects
 // whose lowest point is below `waterTop` come first and are counted in

@@ -134,7 +134,7 @@ static void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena
     bindShared(spheres);
     for (const auto& sphere : sphereDraws) {
       gpu::bindPipeline(cmd, spheres, sphere);
-      gpu::draw(cmd, sphere.tessellation.x * sphere.tessellation.y * 6);
+      gpu::draw(cmd, sphereVertexCount(sphere.tessellation));
     }
   }
   if (!boxDraws.empty()) {
