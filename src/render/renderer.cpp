@@ -42,11 +42,15 @@ struct Renderer::Resources {
         backgroundPass(ctx),
         groundPass(ctx, gbuffer),
         tonemapPass(ctx),
+        // The equirectangular maps': around in u, clamped at the poles, and
+        // through every mip level (the glossy environment's; the sky has one).
         sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
                                                     .minFilter = vk::Filter::eLinear,
+                                                    .mipmapMode = vk::SamplerMipmapMode::eLinear,
                                                     .addressModeU = vk::SamplerAddressMode::eRepeat,
                                                     .addressModeV = vk::SamplerAddressMode::eClampToEdge,
-                                                    .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+                                                    .addressModeW = vk::SamplerAddressMode::eClampToEdge,
+                                                    .maxLod = VK_LOD_CLAMP_NONE}),
         nearestSampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
                                                            .minFilter = vk::Filter::eNearest,
                                                            .addressModeU = vk::SamplerAddressMode::eClampToEdge,
@@ -57,13 +61,6 @@ struct Renderer::Resources {
                                                          .addressModeU = vk::SamplerAddressMode::eClampToEdge,
                                                          .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                          .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
-        glossySampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
-                                                          .minFilter = vk::Filter::eLinear,
-                                                          .mipmapMode = vk::SamplerMipmapMode::eLinear,
-                                                          .addressModeU = vk::SamplerAddressMode::eRepeat,
-                                                          .addressModeV = vk::SamplerAddressMode::eClampToEdge,
-                                                          .addressModeW = vk::SamplerAddressMode::eClampToEdge,
-                                                          .maxLod = VK_LOD_CLAMP_NONE}),
         color(gpu::createImage2D(ctx, {w, h}, kHdrFormat,
                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
                                      vk::ImageUsageFlagBits::eTransferSrc,
@@ -120,11 +117,11 @@ struct Renderer::Resources {
     // glossy surfaces no pass, and one black texel for the shaders to bind.
     if (hasGlossySurface(scene)) {
       glossyPrefilter.emplace(ctx, sky.extent.width, sky.extent.height);
-      glossy = {graph.image("glossy environment", glossyPrefilter->map()), &glossyPrefilter->map(), *glossySampler};
+      glossy = {graph.image("glossy environment", glossyPrefilter->map()), &glossyPrefilter->map(), *sampler};
     } else {
       noGlossy = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(0.0f)}}, "no glossy environment");
       glossy = {graph.image("glossy environment", noGlossy, vk::ImageLayout::eShaderReadOnlyOptimal), &noGlossy,
-                *glossySampler};
+                *sampler};
     }
     colorRef = graph.image("color", color);
     auto depthRef = graph.image("depth", depth);
@@ -352,7 +349,7 @@ struct Renderer::Resources {
   BackgroundPass backgroundPass;
   GroundPass groundPass;
   TonemapPass tonemapPass;
-  vk::raii::Sampler sampler, nearestSampler, clampSampler, glossySampler;
+  vk::raii::Sampler sampler, nearestSampler, clampSampler;
   gpu::Image sky, color, depth, ldr;
   gpu::Buffer uniforms, colorReadback, ldrReadback;
   gpu::DescriptorArena descriptors;
