@@ -82,16 +82,10 @@ void benchGlossyPrefilter(const gpu::Context& ctx, const render::SkyImage& sky, 
       std::printf("%-12s %8u %10.2f", strategy.name, n, ms);
       for (uint32_t k = 0; k < levels; ++k) {
         const uint32_t w = base >> k;
-        double squares = 0.0, sum = 0.0, peak = 0.0, worst = 0.0;
-        for (size_t t = 0; t < texels[k].size(); ++t) {
-          const double got = map[k][size_t(texels[k][t].y) * w + texels[k][t].x].y, want = exact[k][t];
-          squares += (got - want) * (got - want);
-          sum += want;
-          peak = std::max(peak, want);
-          worst = std::max(worst, std::abs(got - want));
-        }
-        const double count = double(texels[k].size());
-        const double rms = std::sqrt(squares / count) / (sum / count), worstRelative = worst / peak;
+        std::vector<double> got;
+        for (const glm::uvec2 t : texels[k]) got.push_back(map[k][size_t(t.y) * w + t.x].y);
+        const render::GlossyLevelError error = render::glossyLevelError(got, exact[k]);
+        const double rms = error.rms, worstRelative = error.worst;
         std::printf("   %8.2e | %8.2e", rms, worstRelative);
         csv << strategy.name << "," << n << "," << k << "," << formatNumber("%.6g", shader::glossyLevelExponent(base, k))
             << "," << formatNumber("%.6g", ms) << "," << formatNumber("%.6g", rms) << ","

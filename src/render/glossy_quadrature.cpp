@@ -53,4 +53,17 @@ glm::dvec3 GlossyQuadrature::radiance(glm::vec3 direction, float exponent) const
   return sum;
 }
 
+GlossyLevelError glossyLevelError(const std::vector<double>& estimate, const std::vector<double>& exact) {
+  double squares = 0.0, sum = 0.0, peak = 0.0, worst = 0.0;
+  for (size_t t = 0; t < exact.size(); ++t) {
+    const double difference = estimate[t] - exact[t];
+    squares += difference * difference;
+    sum += exact[t];
+    peak = std::max(peak, exact[t]);
+    worst = std::max(worst, std::abs(difference));
+  }
+  const double n = double(exact.size());
+  return {std::sqrt(squares / n) / (sum / n), worst / peak};
+}
+
 }  // namespace tp::render

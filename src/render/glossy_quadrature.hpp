@@ -1,5 +1,6 @@
 #pragma once
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "render/sky_image.hpp"
 
@@ -25,5 +26,15 @@ class GlossyQuadrature {
 
 // The share of the lobe, relative to its peak, below which texels are left out.
 constexpr double kGlossyTruncation = 1e-8;
+
+// How far estimates of a prefiltered level are from the exact values at the
+// same texels: the RMS of the differences relative to the mean exact value,
+// and the worst difference relative to the brightest (the prefilter's tests
+// and bench ibl's glossy table).
+struct GlossyLevelError {
+  double rms = 0.0;
+  double worst = 0.0;
+};
+GlossyLevelError glossyLevelError(const std::vector<double>& estimate, const std::vector<double>& exact);
 
 }  // namespace tp::render
