@@ -15,10 +15,10 @@ add_compile_options(-Wno-pass-failed)
 
 add_library(tidepool_cpu STATIC
   src/scene/scene.cpp src/scene/scene_file.cpp src/scene/camera.cpp
-  src/io/text_file.cpp src/io/atomic_file.cpp src/io/image_io.cpp
-  src/sim/water_state.cpp src/sim/water_params.cpp src/sim/cpu_stepper.cpp src/sim/reference_sim.cpp
+  src/base/text_file.cpp src/base/atomic_file.cpp src/io/image_io.cpp
+  src/sim/water_state.cpp src/io/water_state_file.cpp src/sim/water_params.cpp src/sim/cpu_stepper.cpp src/sim/reference_sim.cpp
   src/sim/exact_mode.cpp
-  src/app/camera_controller.cpp src/app/water_pick.cpp src/app/frame_sequence.cpp)
+  src/viewer/camera_controller.cpp src/viewer/water_pick.cpp src/cli/frame_sequence.cpp)
 target_include_directories(tidepool_cpu PUBLIC src shaders_glsl)
 target_compile_definitions(tidepool_cpu PUBLIC GLM_FORCE_DEPTH_ZERO_TO_ONE GLM_FORCE_RADIANS)
 target_compile_options(tidepool_cpu PUBLIC ${sanitizers} -fsanitize=fuzzer-no-link)

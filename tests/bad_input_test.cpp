@@ -29,8 +29,8 @@ TEST(BadInput, HugeSceneFile) {
   huge += "0]}";
   ScratchDir dir;
   writeText(dir.file("huge.json"), huge);
-  const std::string line = expectCleanFailure("render --out " + dir.file("x.exr") + " --scene " + dir.file("huge.json"),
-                                              dir, {"huge.json"});
+  const std::string line =
+      expectCleanFailure("render --out " + dir.file("x.exr") + " --scene " + dir.file("huge.json"), dir, {"huge.json"});
   EXPECT_NE(line.find("junk: is not a known key"), std::string::npos) << line;
 }
 
@@ -72,10 +72,9 @@ TEST(BadInput, BrokenSkyImages) {
 TEST(BadInput, FullDiskLeavesNoFile) {
   ScratchDir dir;
   const std::string limit = fileSizeLimit(16);  // the frames below take 70 KB and more
-  for (const std::string& args :
-       {"render --width 256 --height 144 --out " + dir.file("x.exr"),
-        "render --width 256 --height 144 --frames 0-2 --out " + dir.file("f.####.exr"),
-        "sim --grid 256 --steps 2 --out " + dir.file("s.exr")}) {
+  for (const std::string& args : {"render --width 256 --height 144 --out " + dir.file("x.exr"),
+                                  "render --width 256 --height 144 --frames 0-2 --out " + dir.file("f.####.exr"),
+                                  "sim --grid 256 --steps 2 --out " + dir.file("s.exr")}) {
     const std::string line = expectCleanFailure(args, dir, {}, limit);
     EXPECT_NE(line.find("cannot write"), std::string::npos) << args << "\n" << line;
   }
@@ -96,8 +95,8 @@ TEST(BadInput, WaterLargerThanTheDeviceHolds) {
 TEST(BadInput, GlassOfAnImpossibleIndex) {
   ScratchDir dir;
   writeText(dir.file("glass.json"), "{\"spheres\": [{\"material\": \"glass\", \"ior\": 0.9}]}");
-  const std::string line =
-      expectCleanFailure("render --out " + dir.file("x.exr") + " --scene " + dir.file("glass.json"), dir, {"glass.json"});
+  const std::string line = expectCleanFailure(
+      "render --out " + dir.file("x.exr") + " --scene " + dir.file("glass.json"), dir, {"glass.json"});
   EXPECT_NE(line.find("spheres[].ior = 0.900000 is outside (1, 3]"), std::string::npos) << line;
 }
 

@@ -13,7 +13,7 @@
 #include "gpu/submit.hpp"
 #include "gpu/transfer.hpp"
 #include "gpu_test.hpp"
-#include "render/pool_model.hpp"
+#include "shading/pool_model.hpp"
 #include "shared/pool.h"
 
 namespace tp::test {
@@ -110,7 +110,8 @@ TEST(Brick, PlainWallsAreTheWallAlbedo) {
   scene::Scene s = brickScene();
   s.pool.wallPattern = "plain";
   const shader::PoolParams p = render::poolParams(s);
-  for (float x : {-1.3f, 0.2f, 1.9f}) EXPECT_EQ(shader::poolWallAlbedo(p, {x, 0.4f}, glm::vec2(0.0f)), s.pool.wallAlbedo);
+  for (float x : {-1.3f, 0.2f, 1.9f})
+    EXPECT_EQ(shader::poolWallAlbedo(p, {x, 0.4f}, glm::vec2(0.0f)), s.pool.wallAlbedo);
 }
 
 using BrickGpuTest = GpuTest;
@@ -133,8 +134,11 @@ TEST_F(BrickGpuTest, GpuAndCpuWallAlbedoAgreeToTheBit) {
   gpu::DescriptorArena arena(ctx());
   gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
     gpu::bindPipeline(cmd, pipeline, count);
-    gpu::DescriptorWrites().storageBuffer(0, pointBuffer).storageBuffer(1, values).uniformBuffer(2, poolBuffer).bind(
-        cmd, pipeline, arena);
+    gpu::DescriptorWrites()
+        .storageBuffer(0, pointBuffer)
+        .storageBuffer(1, values)
+        .uniformBuffer(2, poolBuffer)
+        .bind(cmd, pipeline, arena);
     gpu::dispatchCovering(cmd, pipeline, count);
   });
   const auto gpuValues = gpu::readBufferAs<glm::vec4>(ctx(), values, gpu::access::computeWrite);

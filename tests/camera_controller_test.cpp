@@ -9,14 +9,14 @@
 #include <cstring>
 #include <numbers>
 
-#include "app/camera_controller.hpp"
 #include "scene/scene.hpp"
+#include "viewer/camera_controller.hpp"
 
 namespace tp::test {
 namespace {
 
-using app::CameraControls;
 using app::CameraController;
+using app::CameraControls;
 constexpr double kPi = std::numbers::pi;
 
 double distance(const scene::Camera& c) { return glm::length(glm::dvec3(c.position) - glm::dvec3(c.target)); }
@@ -92,7 +92,8 @@ TEST(CameraController, ZoomScalesTheDistanceByTheNotchFactor) {
   for (double notches : {1.0, 3.0, -2.0, 0.5}) {
     CameraController controller(home);
     controller.zoom(notches);
-    EXPECT_NEAR(distance(controller.camera()), d0 * std::pow(CameraControls::kZoomPerNotch, notches), kPositionTolerance)
+    EXPECT_NEAR(distance(controller.camera()), d0 * std::pow(CameraControls::kZoomPerNotch, notches),
+                kPositionTolerance)
         << notches;
     EXPECT_TRUE(controller.camera().target == home.target);
     // Along the same line: the direction to the camera does not change.
@@ -114,11 +115,11 @@ TEST(CameraController, FlyMovesPositionAndTargetByTheSameHorizontalVector) {
   const glm::dvec3 right = glm::cross(ahead, glm::dvec3(0.0, 1.0, 0.0));
   const double metres = CameraControls::kFlySpeed * 0.5;
   const std::pair<glm::dvec2, glm::dvec3> cases[] = {
-      {{1.0, 0.0}, metres * ahead},                                   // W
-      {{-1.0, 0.0}, -metres * ahead},                                 // S
-      {{0.0, 1.0}, metres * right},                                   // D
-      {{0.0, -1.0}, -metres * right},                                 // A
-      {{1.0, 1.0}, metres * glm::normalize(ahead + right)},           // W and D: no faster
+      {{1.0, 0.0}, metres * ahead},                          // W
+      {{-1.0, 0.0}, -metres * ahead},                        // S
+      {{0.0, 1.0}, metres * right},                          // D
+      {{0.0, -1.0}, -metres * right},                        // A
+      {{1.0, 1.0}, metres * glm::normalize(ahead + right)},  // W and D: no faster
   };
   for (const auto& [keys, expected] : cases) {
     CameraController controller(home);

@@ -15,7 +15,8 @@ namespace tp::test {
 TEST(Cli, RenderWritesExrPngAndProfile) {
   ScratchDir dir;
   const std::string exr = dir.file("frame.exr"), png = dir.file("frame.png");
-  ProcessResult r = runTidepool("render --width 96 --height 64 --out " + exr + " --png " + png + " --validate --profile", dir);
+  ProcessResult r =
+      runTidepool("render --width 96 --height 64 --out " + exr + " --png " + png + " --validate --profile", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
   for (const char* pass : {"pass", "GPU ms", "sky", "background", "ground", "tonemap", "total"}) {
@@ -67,15 +68,17 @@ TEST(Cli, AovsAreFloatChannelsAfterRgba) {
   EXPECT_EQ(spec.channelformats[4], OIIO::TypeDesc::FLOAT);
   EXPECT_EQ(spec.channelformats[10], OIIO::TypeDesc::FLOAT);
   ScratchDir again;
-  EXPECT_NE(expectCleanFailure("render --aov Z,Q --out " + again.file("x.exr"), again, {}).find("Q"), std::string::npos);
+  EXPECT_NE(expectCleanFailure("render --aov Z,Q --out " + again.file("x.exr"), again, {}).find("Q"),
+            std::string::npos);
 }
 
 TEST(Cli, ReferenceWritesTheRasterLayoutAndReportsProgress) {
   ScratchDir dir;
   const std::string exr = dir.file("ref.exr"), png = dir.file("ref.png");
-  ProcessResult r = runTidepool("render --reference --samples 4 --frame 3 --validate --width 48 --height 32 --aov Z,N --out " +
-                                    exr + " --png " + png,
-                                dir);
+  ProcessResult r =
+      runTidepool("render --reference --samples 4 --frame 3 --validate --width 48 --height 32 --aov Z,N --out " + exr +
+                      " --png " + png,
+                  dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("reference: 100%"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(png));
@@ -133,8 +136,10 @@ TEST(Cli, BadCommandLinesFailCleanly) {
 TEST(Cli, UnwritableOutputsFailCleanly) {
   ScratchDir dir;
   std::vector<std::string> none;
-  EXPECT_NE(expectCleanFailure("render --out /nonexistent-dir/x.exr", dir, none).find("does not exist"), std::string::npos);
-  EXPECT_NE(expectCleanFailure("render --out " + dir.file("x.tiff"), dir, none).find("must end in .exr"), std::string::npos);
+  EXPECT_NE(expectCleanFailure("render --out /nonexistent-dir/x.exr", dir, none).find("does not exist"),
+            std::string::npos);
+  EXPECT_NE(expectCleanFailure("render --out " + dir.file("x.tiff"), dir, none).find("must end in .exr"),
+            std::string::npos);
   EXPECT_NE(expectCleanFailure("render --out " + dir.file("x.exr") + " --png " + dir.file("x.jpg"), dir, none)
                 .find("must end in .png"),
             std::string::npos);
@@ -171,7 +176,10 @@ TEST(Cli, SceneFileRendersTheSameAsTheBuiltInScene) {
   const std::string a = dir.file("a.exr"), b = dir.file("b.exr");
   ASSERT_EQ(runTidepool("render --validate --width 64 --height 40 --out " + a, dir).exitCode, 0);
   ASSERT_EQ(runTidepool("render --validate --width 64 --height 40 --scene " + std::string(TIDEPOOL_SOURCE_DIR) +
-                            "/scenes/default.json --out " + b, dir).exitCode, 0);
+                            "/scenes/default.json --out " + b,
+                        dir)
+                .exitCode,
+            0);
   EXPECT_EQ(io::readImage(a).pixels, io::readImage(b).pixels);
 }
 

@@ -26,9 +26,11 @@ constexpr uint32_t kCount = 1000;  // not a multiple of the local size: the edge
 struct Saxpy {
   explicit Saxpy(const gpu::Context& ctx)
       : pipeline(gpu::createComputePipeline(ctx, "test_saxpy.comp", sizeof(SaxpyPush))),
-        x(gpu::createBuffer(ctx, kCount * 4, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
+        x(gpu::createBuffer(ctx, kCount * 4,
+                            vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
                             gpu::MemoryUse::Upload, "x")),
-        y(gpu::createBuffer(ctx, kCount * 4, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
+        y(gpu::createBuffer(ctx, kCount * 4,
+                            vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
                             gpu::MemoryUse::Upload, "y")),
         descriptors(ctx) {
     for (uint32_t i = 0; i < kCount; ++i) {
@@ -61,10 +63,10 @@ TEST_F(ComputeTest, RoundTripMatchesCpu) {
   // so fused and unfused multiply-add round the same way and equality is exact.
   gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
     s.dispatch(cmd, 2.0f, s.x, s.y);
-    auto barrier = gpu::bufferBarrier(s.y.handle(), {vk::PipelineStageFlagBits2::eComputeShader,
-                                                      vk::AccessFlagBits2::eShaderStorageWrite},
-                                      {vk::PipelineStageFlagBits2::eComputeShader,
-                                       vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite});
+    auto barrier = gpu::bufferBarrier(
+        s.y.handle(), {vk::PipelineStageFlagBits2::eComputeShader, vk::AccessFlagBits2::eShaderStorageWrite},
+        {vk::PipelineStageFlagBits2::eComputeShader,
+         vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite});
     gpu::pipelineBarrier(cmd, std::span(&barrier, 1));
     s.dispatch(cmd, 2.0f, s.x, s.y);
   });
@@ -87,8 +89,9 @@ TEST_F(ComputeTest, MissingBarrierIsReportedBySynchronizationValidation) {
   });
   ctx().device().waitIdle();
   auto& log = ctx().validationLog();
-  EXPECT_TRUE(log.contains("SYNC-HAZARD-READ-AFTER-WRITE")) << "synchronization validation missed the hazard; messages:\n"
-                                           << joined(log.messages());
+  EXPECT_TRUE(log.contains("SYNC-HAZARD-READ-AFTER-WRITE"))
+      << "synchronization validation missed the hazard; messages:\n"
+      << joined(log.messages());
   log.clear();  // the hazard was the point of this test
 }
 

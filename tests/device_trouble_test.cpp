@@ -24,9 +24,11 @@ TEST(DeviceTrouble, OutOfDeviceMemoryEndsTheRunWithOneLine) {
                                   "sim --grid 512 --steps 10 --out " + dir.file("s.exr")}) {
     const std::string line = expectCleanFailure(args, dir, {}, "TIDEPOOL_INJECT_FAULT=out-of-memory");
     EXPECT_NE(line.find("out of device memory (VK_ERROR_OUT_OF_DEVICE_MEMORY) allocating"), std::string::npos)
-        << args << "\n" << line;
+        << args << "\n"
+        << line;
   }
-  const std::string line = expectCleanFailure("render --out " + dir.file("x.exr"), dir, {}, "TIDEPOOL_INJECT_FAULT=melt");
+  const std::string line =
+      expectCleanFailure("render --out " + dir.file("x.exr"), dir, {}, "TIDEPOOL_INJECT_FAULT=melt");
   EXPECT_NE(line.find("TIDEPOOL_INJECT_FAULT=melt: expected device-lost, out-of-memory or leak"), std::string::npos)
       << line;
 }
@@ -39,9 +41,10 @@ TEST(DeviceTrouble, OutOfDeviceMemoryEndsTheRunWithOneLine) {
 TEST(DeviceTrouble, NoVulkanObjectIsLeftAtExit) {
   ScratchDir dir;
   const std::string runs[] = {
-      "render --validate --width 48 --height 27 --aov Z,N,P,ao --out " + dir.file("r.exr") + " --png " + dir.file("r.png"),
-      "render --validate --width 48 --height 27 --frames 0-2 --checkpoint-every 1 --checkpoint-dir " + dir.path().string() +
-          " --out " + dir.file("f.####.exr"),
+      "render --validate --width 48 --height 27 --aov Z,N,P,ao --out " + dir.file("r.exr") + " --png " +
+          dir.file("r.png"),
+      "render --validate --width 48 --height 27 --frames 0-2 --checkpoint-every 1 --checkpoint-dir " +
+          dir.path().string() + " --out " + dir.file("f.####.exr"),
       "sim --validate --grid 32 --steps 5 --out " + dir.file("s.exr"),
       "export --validate --frame 2 --out " + dir.file("e.obj"),
       "bench frame --validate --frames 2 --resolution 32x18 --plot \"\" --csv " + dir.file("b.csv"),

@@ -18,7 +18,8 @@ inline render::SkyImage discSky(uint32_t w, uint32_t h, float background, float 
   for (uint32_t j = 0; j < h; ++j) {
     for (uint32_t i = 0; i < w; ++i) {
       const glm::vec3 d = shader::equirectToDirection({(i + 0.5f) / w, (j + 0.5f) / h});
-      if (glm::dot(d, centre) > std::cos(glm::radians(3.0f))) image.texels[size_t(j) * w + i] = glm::vec4(glm::vec3(disc), 1.0f);
+      if (glm::dot(d, centre) > std::cos(glm::radians(3.0f)))
+        image.texels[size_t(j) * w + i] = glm::vec4(glm::vec3(disc), 1.0f);
     }
   }
   return image;

@@ -5,12 +5,12 @@
 #include <sstream>
 
 #include "process.hpp"
-#include "sim_support.hpp"
-#include "render/objects_model.hpp"
 #include "scene/scene_file.hpp"
-#include "render/pool_model.hpp"
-#include "render/water_model.hpp"
+#include "shading/objects_model.hpp"
+#include "shading/pool_model.hpp"
+#include "shading/water_model.hpp"
 #include "sim/reference_sim.hpp"
+#include "sim_support.hpp"
 
 namespace tp::test {
 namespace {
@@ -65,8 +65,8 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
 
   // The water's heights against the double-precision reference run for the
   // same frames (float32 round-off over a few steps).
-  sim::ReferenceSim reference(render::waterParams(s.water), render::waterInitialState(s.water));
-  reference.steps(uint64_t(kFrame) * render::waterSubsteps(s.water), render::waterStep(s.water));
+  sim::ReferenceSim reference(sim::waterParams(s.water), sim::waterInitialState(s.water));
+  reference.steps(uint64_t(kFrame) * sim::waterSubsteps(s.water), sim::waterStep(s.water));
   double worst = 0.0, moved = 0.0;
   for (size_t k = 0; k < size_t(n) * n; ++k) {
     worst = std::max(worst, std::abs(double(c.vertices[first + k].y) - (s.water.level + reference.u()[k])));
@@ -119,7 +119,6 @@ TEST(ExportCli, BadOutputsFailCleanly) {
             std::string::npos);
 }
 
-
 // A sphere moving down into calm water along its path pushes out exactly the
 // volume it comes to occupy below the rest level (as the grid samples it), and
 // the export puts it where the path says at the frame's time.
@@ -130,8 +129,8 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
     "spheres": [{"radius": 0.45, "path": [{"time": 0.0, "center": [0.9, 0.4, -0.7]},
                                            {"time": 0.5, "center": [0.9, -0.3, -0.7]}]}]})");
   constexpr uint32_t kFrame = 9;
-  ProcessResult r = runTidepool("export --validate --scene " + sceneFile + " --frame " + std::to_string(kFrame) +
-                                    " --out " + obj, dir);
+  ProcessResult r = runTidepool(
+      "export --validate --scene " + sceneFile + " --frame " + std::to_string(kFrame) + " --out " + obj, dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const scene::Scene s = scene::loadSceneFile(sceneFile);
   const float t = kFrame * s.water.frameTime;
@@ -153,7 +152,8 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   const double submerged = submergedVolume(n, s.water.extent, s.water.level, center, s.spheres[0].radius);
   double waterChange = 0.0;
   for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
+    for (uint32_t i = 0; i < n; ++i)
+      waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
   EXPECT_NEAR(waterChange, -submerged, 1e-3 * submerged);

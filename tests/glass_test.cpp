@@ -8,9 +8,9 @@
 #include <cstdio>
 
 #include "gpu_test.hpp"
-#include "render/glass_view.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_tracer.hpp"
+#include "reference/glass_view.hpp"
+#include "reference/image_error.hpp"
+#include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "shared/glass.h"
 #include "shared/objects.h"
@@ -52,8 +52,8 @@ TEST(GlassOptics, FresnelReflectance) {
   EXPECT_NEAR(shader::fresnelDielectric(1e-4f, 1.0f, 1.5f), 1.0f, 1e-3f);
   EXPECT_EQ(shader::fresnelDielectric(std::cos(glm::radians(45.0f)), 1.5f, 1.0f), 1.0f);
   const float cosI = std::cos(glm::radians(50.0f)), sinT = std::sin(glm::radians(50.0f)) / 1.5f;
-  EXPECT_NEAR(shader::fresnelDielectric(cosI, 1.0f, 1.5f), shader::fresnelDielectric(std::sqrt(1.0f - sinT * sinT), 1.5f, 1.0f),
-              1e-6f);
+  EXPECT_NEAR(shader::fresnelDielectric(cosI, 1.0f, 1.5f),
+              shader::fresnelDielectric(std::sqrt(1.0f - sinT * sinT), 1.5f, 1.0f), 1e-6f);
 }
 
 // A sphere never traps light: the chord makes the same angle with the normal
@@ -81,7 +81,8 @@ TEST(GlassOptics, ASphereIsLeftThroughItsBackFaces) {
       size_t rays = 0;
       for (int i = 0; i <= 100; ++i) {
         for (int j = 0; j <= 100; ++j) {
-          const glm::vec3 view = glm::normalize(glm::vec3(-1.0f + 0.02f * float(i), -1.0f + 0.02f * float(j), -distance));
+          const glm::vec3 view =
+              glm::normalize(glm::vec3(-1.0f + 0.02f * float(i), -1.0f + 0.02f * float(j), -distance));
           const float s = shader::raySphere(camera, view, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
           if (s <= 0.0f) continue;
           const glm::vec3 entry = camera + s * view, inside = glm::refract(view, entry, 1.0f / ior);
@@ -103,14 +104,14 @@ class GlassTest : public GpuTest {
     constexpr uint32_t factor = 4;
     render::Renderer renderer(ctx(), s, width * factor, height * factor);
     const auto raster = renderer.render({.frame = 0, .hdr = true});
-    EXPECT_NE(render::findPass(raster.passes, "glass back faces"), nullptr);
-    EXPECT_NE(render::findPass(raster.passes, "glass"), nullptr);
+    EXPECT_NE(render::findPass(raster.passes, render::passes::kGlassBackFaces), nullptr);
+    EXPECT_NE(render::findPass(raster.passes, render::passes::kGlass), nullptr);
     return render::boxDownsample(raster.rgba, width * factor, height * factor, factor);
   }
 };
 
 // Tonemapped RMSE over the glass pixels, raster against the reference's exact
-// exit point. Measured on lavapipe at 160x90 (README, "Glass"): 0.0040 with
+// exit point. Measured on lavapipe at 160x90 (docs/glass.md): 0.0040 with
 // the default 8 search steps, 0.0675 with 1 step.
 constexpr double kGlassBound = 0.006;
 
@@ -123,7 +124,8 @@ TEST_F(GlassTest, GlassSphereMatchesTheReferenceWithinTheBound) {
   const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure, mask);
   const auto frame = render::tonemappedError(raster, reference.rgba, s.render.exposure);
   s.render.glassSearchSteps = 1;
-  const auto coarse = render::tonemappedError(supersampledRaster(s, width, height), reference.rgba, s.render.exposure, mask);
+  const auto coarse =
+      render::tonemappedError(supersampledRaster(s, width, height), reference.rgba, s.render.exposure, mask);
   std::printf("glass sphere, 160x90: %zu glass pixels, RMSE %.4f max %.4f (8 steps), %.4f (1 step); frame RMSE %.4f\n",
               e.pixels, e.rmse, e.maxError, coarse.rmse, frame.rmse);
   ASSERT_GT(e.pixels, size_t(width * height / 20));
@@ -199,11 +201,11 @@ TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
   s.camera.target = s.camera.position + glm::vec3(0.0f, 0.0f, 1.0f);  // looking away
   render::Renderer away(ctx(), s, 64, 36);
   const auto frame = away.render({.frame = 0, .hdr = true});
-  EXPECT_EQ(render::findPass(frame.passes, "glass"), nullptr);
-  EXPECT_EQ(render::findPass(frame.passes, "glass back faces"), nullptr);
+  EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlass), nullptr);
+  EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlassBackFaces), nullptr);
   render::Renderer none(ctx(), scene::defaultScene(), 64, 36);
   const auto plain = none.render({.frame = 0, .hdr = true});
-  EXPECT_EQ(render::findPass(plain.passes, "glass"), nullptr);
+  EXPECT_EQ(render::findPass(plain.passes, render::passes::kGlass), nullptr);
 }
 
 // With nothing skipped (every sphere drawn, in view or not) the glass comes

@@ -10,13 +10,13 @@
 
 #include "env_skies.hpp"
 #include "gpu_test.hpp"
+#include "reference/glossy_quadrature.hpp"
+#include "reference/image_error.hpp"
+#include "reference/reference_tracer.hpp"
 #include "render/glossy_prefilter.hpp"
-#include "render/glossy_quadrature.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "render/sky_image.hpp"
-#include "render/water_model.hpp"
+#include "shading/water_model.hpp"
 #include "shared/equirect.h"
 #include "shared/glossy.h"
 
@@ -29,7 +29,8 @@ struct SkyOnGpu {
   SkyOnGpu(const gpu::Context& ctx, render::SkyImage sky)
       : image(std::move(sky)),
         texture(render::uploadSkyImage(ctx, image)),
-        sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest, .minFilter = vk::Filter::eNearest}) {}
+        sampler(ctx.device(),
+                vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest, .minFilter = vk::Filter::eNearest}) {}
   Levels prefilter(const gpu::Context& ctx, render::GlossySampling sampling) {
     render::GlossyPrefilter prefilter(ctx, image.width, image.height, sampling);
     return prefilter.prefilterAndRead(texture, *sampler);
@@ -65,7 +66,7 @@ std::vector<render::GlossyLevelError> levelErrors(const Levels& gpu, const rende
 }
 
 // Per level of the sun sky's map, the 64 + 64 MIS estimate's errors against
-// the quadrature (measured figures in the README); set from measurement.
+// the quadrature (measured figures in docs/image-based-lighting.md); set from measurement.
 // Measured: RMS 0.160, 0.062, 0.028, 0.013; worst 0.025, 0.030, 0.021, 0.018
 // (deterministic: the margin is for lavapipe compiling for another CPU).
 constexpr double kMisRms[] = {0.2, 0.085, 0.035, 0.017};
@@ -84,7 +85,8 @@ using GlossyGpuTest = GpuTest;
 // floats hold 0.75 exactly). With the renderer's mix (64 + 64 by the balance
 // heuristic) each texel is an estimate: measured worst 3.1% off; bound 4%.
 TEST_F(GlossyGpuTest, ConstantSkyGivesItselfAtEveryLevel) {
-  SkyOnGpu sky(ctx(), render::SkyImage{128, 64, std::vector<glm::vec4>(128 * 64, glm::vec4(0.75f, 0.75f, 0.75f, 1.0f))});
+  SkyOnGpu sky(ctx(),
+               render::SkyImage{128, 64, std::vector<glm::vec4>(128 * 64, glm::vec4(0.75f, 0.75f, 0.75f, 1.0f))});
   for (const bool lobeOnly : {true, false}) {
     const Levels levels = sky.prefilter(ctx(), lobeOnly ? render::GlossySampling{0, 64} : render::GlossySampling{});
     ASSERT_EQ(levels.size(), 4u);
@@ -139,14 +141,15 @@ TEST_F(GlossyGpuTest, RasterMatchesTheReferenceWithGlossySurfaces) {
   s.pool.wallSpecular = 1.0f;
   s.pool.wallRoughness = 0.6f;
   constexpr uint32_t width = 160, height = 90, frameNumber = 0, factor = 4;
-  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
   scene::Scene matte = s;
   matte.spheres.at(0).specular = 0.0f;
   matte.pool.wallSpecular = 0.0f;
   const auto matteReference = render::renderReference(matte, &water, frameNumber, width, height, {.samples = 16});
   render::Renderer renderer(ctx(), s, width * factor, height * factor);
-  const auto raster = render::boxDownsample(renderer.render({.frame = frameNumber}).rgba, width * factor, height * factor, factor);
+  const auto raster =
+      render::boxDownsample(renderer.render({.frame = frameNumber}).rgba, width * factor, height * factor, factor);
   const auto shown = render::tonemapToSrgb8(reference.rgba, s.render.exposure);
   const auto matteShown = render::tonemapToSrgb8(matteReference.rgba, s.render.exposure);
   std::vector<uint8_t> glossyPixels(size_t(width) * height, 0);
@@ -160,9 +163,10 @@ TEST_F(GlossyGpuTest, RasterMatchesTheReferenceWithGlossySurfaces) {
   const auto onGloss = render::tonemappedError(raster, reference.rgba, s.render.exposure, glossyPixels);
   const auto againstMatte = render::tonemappedError(raster, matteReference.rgba, s.render.exposure, glossyPixels);
   const auto matteFrame = render::tonemappedError(matteRaster, matteReference.rgba, s.render.exposure);
-  std::printf("glossy sphere and walls, 160x90: tonemapped RMSE %.4f, max %.4f (the matte scene: %.4f); on the %zu "
-              "pixels the gloss changes %.4f (against the matte reference there: %.4f)\n",
-              e.rmse, e.maxError, matteFrame.rmse, onGloss.pixels, onGloss.rmse, againstMatte.rmse);
+  std::printf(
+      "glossy sphere and walls, 160x90: tonemapped RMSE %.4f, max %.4f (the matte scene: %.4f); on the %zu "
+      "pixels the gloss changes %.4f (against the matte reference there: %.4f)\n",
+      e.rmse, e.maxError, matteFrame.rmse, onGloss.pixels, onGloss.rmse, againstMatte.rmse);
   ASSERT_GT(onGloss.pixels, size_t(width * height / 40));  // measured 711
   EXPECT_LT(onGloss.rmse, kGlossyRasterBound);
   // Over the frame, the gloss adds little to what the matte scene has (the
@@ -183,17 +187,18 @@ TEST_F(GlossyGpuTest, PrefilterRunsOncePerSkyAndOnlyWithGlossySurfaces) {
   for (const uint32_t frame : {0u, 1u, 2u}) {
     const auto a = skipping.render({.frame = frame});
     const auto b = everything.render({.frame = frame});
-    EXPECT_EQ(render::findPass(a.passes, "glossy prefilter") != nullptr, frame == 0) << frame;
-    EXPECT_TRUE(render::findPass(b.passes, "glossy prefilter")) << frame;
+    EXPECT_EQ(render::findPass(a.passes, render::passes::kGlossyPrefilter) != nullptr, frame == 0) << frame;
+    EXPECT_TRUE(render::findPass(b.passes, render::passes::kGlossyPrefilter)) << frame;
     EXPECT_EQ(a.rgba, b.rgba) << frame;
   }
   s.spheres.at(0).specular = 0.0f;
   s.pool.wallSpecular = 0.5f;
   s.water.enabled = false;  // glossy walls, but no pool to have them
   render::Renderer matte(ctx(), s, 64, 36, {.skipping = false});
-  for (const uint32_t frame : {0u, 1u}) EXPECT_FALSE(render::findPass(matte.render({.frame = frame}).passes, "glossy prefilter"));
+  for (const uint32_t frame : {0u, 1u})
+    EXPECT_FALSE(render::findPass(matte.render({.frame = frame}).passes, render::passes::kGlossyPrefilter));
   render::Renderer plain(ctx(), scene::defaultScene(), 64, 36);
-  EXPECT_FALSE(render::findPass(plain.render({.frame = 0}).passes, "glossy prefilter"));
+  EXPECT_FALSE(render::findPass(plain.render({.frame = 0}).passes, render::passes::kGlossyPrefilter));
 }
 
 }  // namespace

@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "env_skies.hpp"
-#include "render/glossy_prefilter.hpp"
-#include "render/glossy_quadrature.hpp"
+#include "reference/glossy_quadrature.hpp"
 #include "render/env_sh.hpp"
+#include "render/glossy_prefilter.hpp"
 #include "shared/env_sampling.h"
 #include "shared/glossy.h"
 
@@ -21,7 +21,8 @@ namespace {
 // 64x32 texels and e = 6.5, 3.1e-4 at 128x64; the bound is 1e-3).
 TEST(GlossyQuadrature, ConstantEnvironmentGivesItself) {
   for (const uint32_t w : {64u, 128u}) {
-    const render::SkyImage sky{w, w / 2, std::vector<glm::vec4>(size_t(w) * w / 2, glm::vec4(0.75f, 0.75f, 0.75f, 1.0f))};
+    const render::SkyImage sky{w, w / 2,
+                               std::vector<glm::vec4>(size_t(w) * w / 2, glm::vec4(0.75f, 0.75f, 0.75f, 1.0f))};
     const render::GlossyQuadrature quadrature(sky);
     for (const float e : {1.0f, 1.6f, 6.5f, 26.0f, 104.0f, 415.0f}) {
       double worst = 0.0;

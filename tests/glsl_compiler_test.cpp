@@ -38,8 +38,9 @@ TEST(GlslCompiler, BrokenShadersReportWhereAndWhy) {
   EXPECT_NE(c.errors.find("undeclared"), std::string::npos) << c.errors;
 
   const std::string missing = dir.file("missing.frag");
-  writeText(missing, "#version 450\n#extension GL_GOOGLE_include_directive : require\n#include \"lib/nothing.glsl\"\n"
-                     "void main() {}\n");
+  writeText(missing,
+            "#version 450\n#extension GL_GOOGLE_include_directive : require\n#include \"lib/nothing.glsl\"\n"
+            "void main() {}\n");
   c = gpu::compileGlsl(missing, kShaders);
   EXPECT_FALSE(c.ok());
   EXPECT_NE(c.errors.find("lib/nothing.glsl"), std::string::npos) << c.errors;
@@ -52,8 +53,9 @@ TEST(GlslCompiler, BrokenShadersReportWhereAndWhy) {
   // Includes resolve from the including file's folder first, then the include folder.
   const std::string local = dir.file("local.comp");
   writeText(dir.file("here.glsl"), "const float kHere = 2.0;\n");
-  writeText(local, "#version 450\n#extension GL_GOOGLE_include_directive : require\n#include \"here.glsl\"\n"
-                   "#include \"shared/water.h\"\nlayout(local_size_x = 1) in;\nvoid main() {}\n");
+  writeText(local,
+            "#version 450\n#extension GL_GOOGLE_include_directive : require\n#include \"here.glsl\"\n"
+            "#include \"shared/water.h\"\nlayout(local_size_x = 1) in;\nvoid main() {}\n");
   c = gpu::compileGlsl(local, kShaders);
   EXPECT_TRUE(c.ok()) << c.errors;
   EXPECT_FALSE(c.spirv.empty());

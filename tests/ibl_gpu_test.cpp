@@ -29,7 +29,8 @@ struct DiscSkyOnGpu {
       : image(discSky(kWidth, kHeight, 0.0625f, 2048.0f)),
         cpu(image),
         texture(render::uploadSkyImage(ctx, image)),
-        sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest, .minFilter = vk::Filter::eNearest}),
+        sampler(ctx.device(),
+                vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest, .minFilter = vk::Filter::eNearest}),
         prefilter(ctx, kWidth, kHeight, maxSamples) {
     gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) { prefilter.recordCdf(cmd, texture, *sampler); });
   }
@@ -54,7 +55,8 @@ TEST_F(IblGpuTest, CdfsMatchTheCpuSampler) {
   for (size_t k = 0; k < conditional.size(); ++k) {
     worstConditional = std::max(worstConditional, std::abs(conditional[k] - cpu.columnCdf()[k]));
   }
-  for (uint32_t j = 0; j <= kHeight; ++j) worstMarginal = std::max(worstMarginal, std::abs(marginal[j] - cpu.rowCdf()[j]));
+  for (uint32_t j = 0; j <= kHeight; ++j)
+    worstMarginal = std::max(worstMarginal, std::abs(marginal[j] - cpu.rowCdf()[j]));
   const double integralError = std::abs(marginal[kHeight + 1] - cpu.luminanceIntegral()) / cpu.luminanceIntegral();
   std::printf("GPU CDFs against the CPU's: conditional %.2e, marginal %.2e, integral %.2e (bound %.2e)\n",
               worstConditional, worstMarginal, integralError, bound);
@@ -75,7 +77,8 @@ TEST_F(IblGpuTest, ShEstimateMatchesTheCpuEstimate) {
     });
     const shader::Sh9 got = sky.prefilter.sh();
     const shader::Sh9 expected = render::estimateSh9(
-        sky.image, sky.cpu, uniform ? render::EnvSampling::Uniform : render::EnvSampling::Importance, kSamples, rotation);
+        sky.image, sky.cpu, uniform ? render::EnvSampling::Uniform : render::EnvSampling::Importance, kSamples,
+        rotation);
     double worst = 0.0;
     for (int i = 0; i < 9; ++i) {
       for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(got.c[i][c] - expected.c[i][c])));

@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "render/env_sampler.hpp"
 #include "env_skies.hpp"
+#include "render/env_sampler.hpp"
 #include "render/env_sh.hpp"
 #include "shared/env_sampling.h"
 #include "shared/sh9.h"
@@ -98,7 +98,8 @@ TEST(IblTest, BrightTexelHistogramMatchesItsDensity) {
   std::vector<int> counts(w * h, 0), inside(kSub * kSub, 0);
   std::mt19937 rng(12345);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-  const double cTop = std::cos(glm::pi<double>() * brightJ / h), cBottom = std::cos(glm::pi<double>() * (brightJ + 1) / h);
+  const double cTop = std::cos(glm::pi<double>() * brightJ / h),
+               cBottom = std::cos(glm::pi<double>() * (brightJ + 1) / h);
   for (int k = 0; k < kSamples; ++k) {
     const glm::vec3 d = sampler.sample({uniform(rng), uniform(rng)}).direction;
     const glm::uvec2 t = render::equirectTexel(d, w, h);
@@ -163,7 +164,8 @@ SkyImage discSky() { return test::discSky(256, 128, 0.05f, 2000.0f); }
 double exactIrradianceUp(const SkyImage& image) {
   double e = 0.0;
   for (uint32_t j = 0; j < image.height / 2; ++j) {
-    const double s0 = std::sin(glm::pi<double>() * j / image.height), s1 = std::sin(glm::pi<double>() * (j + 1) / image.height);
+    const double s0 = std::sin(glm::pi<double>() * j / image.height),
+                 s1 = std::sin(glm::pi<double>() * (j + 1) / image.height);
     const double band = glm::two_pi<double>() / image.width * 0.5 * (s1 * s1 - s0 * s0);
     for (uint32_t i = 0; i < image.width; ++i) e += image.texels[j * image.width + i].g * band;
   }

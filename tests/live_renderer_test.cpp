@@ -8,10 +8,10 @@
 #include "gpu_test.hpp"
 #include "process.hpp"
 #include "render/renderer.hpp"
-#include "render/water_model.hpp"
-#include "render/water_sleep.hpp"
 #include "scene/scene_file.hpp"
+#include "shading/water_model.hpp"
 #include "sim/gpu_stepper.hpp"
+#include "sim/water_sleep.hpp"
 #include "sim_support.hpp"
 
 namespace tp::test {
@@ -53,7 +53,7 @@ TEST_F(LiveRendererTest, MovedCameraDrawsWhatARendererMadeForItDraws) {
     scene::Camera camera;
     bool medium;  // the skipping renderer records the camera medium pass
   };
-  const Step steps[] = {{0, s.camera, false}, {1, over, true}, {2, over, true},   {3, s.camera, true},
+  const Step steps[] = {{0, s.camera, false}, {1, over, true},  {2, over, true},    {3, s.camera, true},
                         {4, s.camera, false}, {5, under, true}, {6, s.camera, true}};
   render::Renderer live(ctx(), s, kWidth, kHeight);
   for (const Step& step : steps) {
@@ -64,7 +64,7 @@ TEST_F(LiveRendererTest, MovedCameraDrawsWhatARendererMadeForItDraws) {
     fixed.camera = step.camera;
     const auto b = render::Renderer(ctx(), fixed, kWidth, kHeight, {.skipping = false}).render({.frame = step.frame});
     EXPECT_TRUE(a.rgba == b.rgba);
-    EXPECT_EQ(render::findPass(a.passes, "camera medium") != nullptr, step.medium);
+    EXPECT_EQ(render::findPass(a.passes, render::passes::kCameraMedium) != nullptr, step.medium);
   }
   scene::Camera bad = s.camera;
   bad.target = bad.position;
@@ -87,12 +87,12 @@ TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
   EXPECT_FALSE(renderer.render({.frame = 2}).waterAsleep);
   const sim::WaterState water = renderer.waterState();
 
-  const uint32_t substeps = render::waterSubsteps(s.water);
-  sim::GpuStepper stepper(ctx(), render::waterParams(s.water), render::waterInitialState(s.water),
+  const uint32_t substeps = sim::waterSubsteps(s.water);
+  sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
                           sim::StepKernel::OnePerDispatch);
-  stepper.moveSphere(render::worldToGrid(s.water, from), render::worldToGrid(s.water, to), s.spheres[0].radius,
+  stepper.moveSphere(sim::worldToGrid(s.water, from), sim::worldToGrid(s.water, to), s.spheres[0].radius,
                      s.water.level);
-  stepper.step(substeps, render::waterStep(s.water));
+  stepper.step(substeps, sim::waterStep(s.water));
   const sim::WaterState expected = stepper.download();
   EXPECT_TRUE(water.u == expected.u);
   EXPECT_TRUE(water.v == expected.v);
@@ -102,7 +102,7 @@ TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
   const double pushedIn = submergedVolume(n, s.water.extent, s.water.level, to, s.spheres[0].radius) -
                           submergedVolume(n, s.water.extent, s.water.level, from, s.spheres[0].radius);
   EXPECT_GT(pushedIn, 0.02);
-  EXPECT_NEAR(volumeOf(water, h) - volumeOf(render::waterInitialState(s.water), h), -pushedIn, 1e-3 * pushedIn);
+  EXPECT_NEAR(volumeOf(water, h) - volumeOf(sim::waterInitialState(s.water), h), -pushedIn, 1e-3 * pushedIn);
 
   EXPECT_THROW(renderer.moveSphere(1, to), std::out_of_range);
 }
@@ -118,7 +118,7 @@ TEST_F(LiveRendererTest, NewWaterDynamicsGoOnFromTheState) {
   w.damping = 0.8f;
   w.boundary = "wrap";
   w.maxSlope = 0.2f;
-  const uint32_t before = render::waterSubsteps(s.water), after = render::waterSubsteps(w);
+  const uint32_t before = sim::waterSubsteps(s.water), after = sim::waterSubsteps(w);
   ASSERT_NE(before, after);
 
   render::Renderer renderer(ctx(), s, kWidth, kHeight);
@@ -127,11 +127,11 @@ TEST_F(LiveRendererTest, NewWaterDynamicsGoOnFromTheState) {
   EXPECT_EQ(renderer.scene().water, w);
   renderer.render({.frame = 4});
   renderer.render({.frame = 5});
-  sim::GpuStepper stepper(ctx(), render::waterParams(s.water), render::waterInitialState(s.water),
+  sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
                           sim::StepKernel::OnePerDispatch);
-  stepper.step(3 * before, render::waterStep(s.water));
-  stepper.setParams(render::waterParams(w));
-  stepper.step(2 * after, render::waterStep(w));
+  stepper.step(3 * before, sim::waterStep(s.water));
+  stepper.setParams(sim::waterParams(w));
+  stepper.step(2 * after, sim::waterStep(w));
   const sim::WaterState expected = stepper.download(), water = renderer.waterState();
   EXPECT_TRUE(water.u == expected.u);
   EXPECT_TRUE(water.v == expected.v);
@@ -167,7 +167,7 @@ TEST_F(LiveRendererTest, NewWaterDynamicsWakeSleepingWater) {
 // Drops made live are recorded in the scene with the frame after the one the
 // water has reached, and a new renderer of that scene, saved and loaded,
 // renders the same frames to the bit: frame by frame, straight to the last,
-// and simulateWater() to the same water. The one exception, as documented: a
+// and sim::simulateWater() to the same water. The one exception, as documented: a
 // drop made while paused at frame 3 shows in the live frame 3 at once, in the
 // recorded scene from 4. It is listed before the scene's own drop on frame 4,
 // which comes after it in the live run too.
@@ -213,7 +213,7 @@ TEST_F(LiveRendererTest, LiveDropsAreRecordedAndANewRendererOfTheSceneRendersThe
   }
   render::Renderer jump(ctx(), saved, kWidth, kHeight);
   EXPECT_TRUE(jump.render({.frame = kLast}).rgba == frames[kLast]);
-  EXPECT_TRUE(sameWater(render::simulateWater(ctx(), saved, kLast), live.waterState()));
+  EXPECT_TRUE(sameWater(sim::simulateWater(ctx(), saved, kLast), live.waterState()));
 }
 
 // Calm water sleeps from its first frame; a drop the scene schedules on a
@@ -231,13 +231,13 @@ TEST_F(LiveRendererTest, AScheduledDropWakesSleepingWater) {
     EXPECT_EQ(a.waterAsleep, frame < kDropFrame);
     EXPECT_TRUE(a.rgba == b.rgba);
     if (frame == kDropFrame) {
-      const uint32_t substeps = render::waterSubsteps(s.water);
-      sim::GpuStepper stepper(ctx(), render::waterParams(s.water), render::waterInitialState(s.water),
+      const uint32_t substeps = sim::waterSubsteps(s.water);
+      sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
                               sim::StepKernel::OnePerDispatch);
-      stepper.step(uint64_t(kDropFrame - 1) * substeps, render::waterStep(s.water));
-      const glm::vec3 centre = render::worldToGrid(s.water, {kFirstDrop.x, 0.0f, kFirstDrop.z});
+      stepper.step(uint64_t(kDropFrame - 1) * substeps, sim::waterStep(s.water));
+      const glm::vec3 centre = sim::worldToGrid(s.water, {kFirstDrop.x, 0.0f, kFirstDrop.z});
       stepper.drop({centre.x, centre.z}, kFirstDrop.radius, kFirstDrop.amplitude);
-      stepper.step(substeps, render::waterStep(s.water));
+      stepper.step(substeps, sim::waterStep(s.water));
       EXPECT_TRUE(sameWater(skipping.waterState(), stepper.download()));
     }
   }
@@ -284,7 +284,7 @@ TEST_F(LiveRendererTest, ARendererForAChangedSceneGoesOnWithTheWater) {
   changed.render.caustics = false;
   changed.ao.enabled = false;
   changed.water.ior = 1.5f;
-  render::Renderer next(live, changed);
+  render::Renderer next(render::GoOnFrom{live}, changed);
   EXPECT_TRUE(next.scene() == changed);
   render::Renderer fresh(ctx(), changed, kWidth, kHeight);
   for (uint32_t frame = kMadeAt + 1; frame <= kLast; ++frame) {
@@ -295,10 +295,10 @@ TEST_F(LiveRendererTest, ARendererForAChangedSceneGoesOnWithTheWater) {
 
   scene::Scene grid = changed;
   grid.water.grid = 64;
-  EXPECT_THROW(render::Renderer(live, grid), std::invalid_argument);
+  EXPECT_THROW(render::Renderer(render::GoOnFrom{live}, grid), std::invalid_argument);
   scene::Scene moreDrops = changed;
   moreDrops.water.drops.push_back(kPausedDrop);
-  EXPECT_THROW(render::Renderer(live, moreDrops), std::invalid_argument);
+  EXPECT_THROW(render::Renderer(render::GoOnFrom{live}, moreDrops), std::invalid_argument);
 }
 
 }  // namespace tp::test

@@ -76,8 +76,9 @@ TEST_F(NoiseTest, GpuAndCpuAgreeToTheBit) {
         const float cpu = normalised ? shader::fractalNoise01(kind.id, points[i], 1234u, octaves, 0.5f)
                                      : fractalNoise(kind.id, points[i], 1234u, octaves, 0.5f);
         if (gpuValues[i] != cpu) {
-          if (++mismatches <= 3) ADD_FAILURE() << kind.name << " octaves " << octaves << " normalised " << normalised << " at (" << points[i].x << ", "
-                                               << points[i].y << "): GPU " << gpuValues[i] << " CPU " << cpu;
+          if (++mismatches <= 3)
+            ADD_FAILURE() << kind.name << " octaves " << octaves << " normalised " << normalised << " at ("
+                          << points[i].x << ", " << points[i].y << "): GPU " << gpuValues[i] << " CPU " << cpu;
         }
       }
       EXPECT_EQ(mismatches, 0) << kind.name << " octaves " << octaves << " normalised " << normalised;
@@ -212,9 +213,11 @@ TEST(Noise, ContinuousAcrossCellBoundaries) {
     for (int i = -20; i <= 20; ++i) {
       for (float y : {0.25f, 0.5f, 0.9f}) {
         const glm::vec2 a(float(i) - step / 2, y), b(float(i) + step / 2, y);
-        worst = std::max(worst, std::abs(fractalNoise(kind.id, a, 3u, 1u, 0.5f) - fractalNoise(kind.id, b, 3u, 1u, 0.5f)));
+        worst =
+            std::max(worst, std::abs(fractalNoise(kind.id, a, 3u, 1u, 0.5f) - fractalNoise(kind.id, b, 3u, 1u, 0.5f)));
         const glm::vec2 c(y, float(i) - step / 2), d(y, float(i) + step / 2);
-        worst = std::max(worst, std::abs(fractalNoise(kind.id, c, 3u, 1u, 0.5f) - fractalNoise(kind.id, d, 3u, 1u, 0.5f)));
+        worst =
+            std::max(worst, std::abs(fractalNoise(kind.id, c, 3u, 1u, 0.5f) - fractalNoise(kind.id, d, 3u, 1u, 0.5f)));
       }
     }
     EXPECT_LT(worst, 4.0f * step) << kind.name;

@@ -3,13 +3,13 @@
 // standard output and standard error, in a scratch directory per test.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace tp::test {
 
@@ -53,8 +53,8 @@ class ScratchDir {
 // `env`: put before the executable, e.g. "DISPLAY=:3" or "env -u DISPLAY".
 inline ProcessResult runTidepool(const std::string& args, const ScratchDir& dir, const std::string& env = "") {
   const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string command =
-      env + (env.empty() ? "" : " ") + std::string(TIDEPOOL_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const std::string command = env + (env.empty() ? "" : " ") + std::string(TIDEPOOL_EXE) + " " + args + " >" + out +
+                              " 2>" + err + " </dev/null";
   int status = std::system(command.c_str());
   ProcessResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -25,7 +25,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "render/reference_ao.hpp"
+#include "reference/reference_ao.hpp"
 #include "scene/scene.hpp"
 
 namespace tp::test {
@@ -85,8 +85,9 @@ struct SurfaceImage {
 };
 
 std::vector<float> traceAo(const scene::Scene& s, const SurfaceImage& image, uint32_t rays = kRays) {
-  return render::referenceAmbientOcclusion(s, nullptr, 0.0f, image.position, image.normal, image.width, image.height,
-                                           {.radius = kRadius, .rays = rays, .exactSpheres = true, .originOffset = {}, .progress = nullptr});
+  return render::referenceAmbientOcclusion(
+      s, nullptr, 0.0f, image.position, image.normal, image.width, image.height,
+      {.radius = kRadius, .rays = rays, .exactSpheres = true, .originOffset = {}, .progress = nullptr});
 }
 
 // Occluded fraction of the cosine-weighted hemisphere at a point on one plane
@@ -165,7 +166,8 @@ double rowMean(const std::vector<float>& ao, uint32_t row) {
 TEST(ReferenceAo, OpenPlaneIsUnoccluded) {
   SurfaceImage image;
   // Points far from the origin (where the ground's four triangles meet) and from its edge, 100 m away.
-  for (const glm::vec3 p : {glm::vec3(30.0f, 0.0f, 20.0f), glm::vec3(-25.0f, 0.0f, 40.0f), glm::vec3(-50.0f, 0.0f, -50.0f)})
+  for (const glm::vec3 p :
+       {glm::vec3(30.0f, 0.0f, 20.0f), glm::vec3(-25.0f, 0.0f, 40.0f), glm::vec3(-50.0f, 0.0f, -50.0f)})
     image.addRow(p, {0.0f, 1.0f, 0.0f});
   // A row of sky: no surface, AO 1 by definition.
   image.addRow(glm::vec3(std::numeric_limits<float>::infinity()), glm::vec3(0.0f));
@@ -266,8 +268,10 @@ TEST(ReferenceAo, BadInputsThrow) {
   };
   EXPECT_THROW(ao(image.position, image.normal, withRadius(0.0f)), std::invalid_argument);
   EXPECT_THROW(ao(image.position, image.normal, withRadius(-1.0f)), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::infinity())), std::invalid_argument);
-  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::quiet_NaN())), std::invalid_argument);
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::infinity())),
+               std::invalid_argument);
+  EXPECT_THROW(ao(image.position, image.normal, withRadius(std::numeric_limits<float>::quiet_NaN())),
+               std::invalid_argument);
   render::ReferenceAoOptions noRays;
   noRays.rays = 0;
   EXPECT_THROW(ao(image.position, image.normal, noRays), std::invalid_argument);
@@ -289,7 +293,8 @@ TEST(ReferenceAo, SameInputsGiveIdenticalResults) {
   // not every pixel of a row has the same value.
   for (uint32_t row = 0; row < image.height; ++row) {
     bool allEqual = true;
-    for (uint32_t x = 1; x < image.width; ++x) allEqual = allEqual && first[row * image.width + x] == first[row * image.width];
+    for (uint32_t x = 1; x < image.width; ++x)
+      allEqual = allEqual && first[row * image.width + x] == first[row * image.width];
     EXPECT_FALSE(allEqual) << "row " << row;
   }
 }

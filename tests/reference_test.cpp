@@ -7,12 +7,12 @@
 #include <cstdio>
 
 #include "gpu_test.hpp"
-#include "render/frame_uniforms.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_tracer.hpp"
+#include "reference/image_error.hpp"
+#include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
-#include "render/sky_model.hpp"
-#include "render/water_model.hpp"
+#include "shading/frame_uniforms.hpp"
+#include "shading/sky_model.hpp"
+#include "shading/water_model.hpp"
 
 namespace tp::test {
 namespace {
@@ -117,7 +117,7 @@ TEST_F(ReferenceRasterTest, AccurateRefractionIsCloserToTheReferenceThanApparent
   scene::Scene s = scene::defaultScene();
   s.render.caustics = false;  // the reference leaves them out
   constexpr uint32_t width = 160, height = 90, frameNumber = 10;
-  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
   render::Renderer aovRenderer(ctx(), s, width, height, {.aovs = true});
   const std::vector<uint8_t> waterMask =
@@ -129,8 +129,10 @@ TEST_F(ReferenceRasterTest, AccurateRefractionIsCloserToTheReferenceThanApparent
   const auto eb = render::tonemappedError(b, reference.rgba, s.render.exposure);
   const auto wa = render::tonemappedError(a, reference.rgba, s.render.exposure, waterMask);
   const auto wb = render::tonemappedError(b, reference.rgba, s.render.exposure, waterMask);
-  std::printf("frame 10, 160x90: accurate RMSE %.4f max %.4f (water %.4f over %zu px); apparent RMSE %.4f max %.4f (water %.4f)\n",
-              ea.rmse, ea.maxError, wa.rmse, wa.pixels, eb.rmse, eb.maxError, wb.rmse);
+  std::printf(
+      "frame 10, 160x90: accurate RMSE %.4f max %.4f (water %.4f over %zu px); apparent RMSE %.4f max %.4f (water "
+      "%.4f)\n",
+      ea.rmse, ea.maxError, wa.rmse, wa.pixels, eb.rmse, eb.maxError, wb.rmse);
   ASSERT_GT(wa.pixels, size_t(width * height / 10));
   // The accurate mode within the bound over the frame and on the water, and
   // at least twice as close as the approximation there.
@@ -150,7 +152,7 @@ TEST_F(ReferenceRasterTest, BoxesMatchTheReferenceAboveAndThroughTheWater) {
              {{0.1f, -0.3f, -1.1f}, {0.9f, 0.7f, 0.35f}, -20.0f, {0.8f, 0.7f, 0.2f}},
              {{-1.3f, 0.25f, -2.4f}, {0.5f, 0.5f, 0.5f}, 0.0f, {0.5f, 0.5f, 0.55f}}};
   constexpr uint32_t width = 160, height = 90, frameNumber = 10;
-  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
   const auto raster = supersampledRaster(s, frameNumber, width, height);
   scene::Scene without = s;
@@ -165,8 +167,8 @@ TEST_F(ReferenceRasterTest, BoxesMatchTheReferenceAboveAndThroughTheWater) {
   }
   const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure);
   const auto onBoxes = render::tonemappedError(raster, reference.rgba, s.render.exposure, boxPixels);
-  std::printf("boxes, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f; on the %zu pixels the boxes change %.4f\n", e.rmse,
-              e.maxError, onBoxes.pixels, onBoxes.rmse);
+  std::printf("boxes, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f; on the %zu pixels the boxes change %.4f\n",
+              e.rmse, e.maxError, onBoxes.pixels, onBoxes.rmse);
   ASSERT_GT(onBoxes.pixels, size_t(width * height / 40));  // measured 515
   EXPECT_LT(e.rmse, kRasterBound);
   EXPECT_LT(onBoxes.rmse, kRasterBound);
@@ -191,7 +193,7 @@ TEST_F(ReferenceRasterTest, BrickWallsMatchTheReference) {
   s.camera.target = {-2.0f, -0.1f, -0.7f};
   s.camera.fovYDegrees = 60.0f;
   constexpr uint32_t width = 160, height = 90, frameNumber = 10, kSamples = 256;
-  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = kSamples});
   const auto raster = supersampledRaster(s, frameNumber, width, height, 8);
   scene::Scene plain = s;
@@ -216,9 +218,10 @@ TEST_F(ReferenceRasterTest, BrickWallsMatchTheReference) {
   const auto et = render::tonemappedError(raster, reference.rgba, s.render.exposure, through);
   const auto e = render::tonemappedError(raster, reference.rgba, s.render.exposure);
   const auto plainRaster = render::tonemappedError(raster, plainReference.rgba, s.render.exposure, brickPixels);
-  std::printf("brick walls, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f; where the bricks show, seen directly "
-              "%.4f (%zu px), through the water %.4f (%zu px); the raster against plain walls there %.4f\n",
-              e.rmse, e.maxError, ed.rmse, ed.pixels, et.rmse, et.pixels, plainRaster.rmse);
+  std::printf(
+      "brick walls, frame 10, 160x90: tonemapped RMSE %.4f, max %.4f; where the bricks show, seen directly "
+      "%.4f (%zu px), through the water %.4f (%zu px); the raster against plain walls there %.4f\n",
+      e.rmse, e.maxError, ed.rmse, ed.pixels, et.rmse, et.pixels, plainRaster.rmse);
   ASSERT_GT(ed.pixels, size_t(width * height / 40));  // measured 606
   ASSERT_GT(et.pixels, size_t(width * height / 20));  // measured 1368
   EXPECT_LT(e.rmse, kRasterBound);
@@ -262,7 +265,7 @@ TEST_F(ReferenceRasterTest, CameraUnderTheSurfaceMatchesTheReference) {
   s.camera.fovYDegrees = 70.0f;
   s.boxes = {{{-0.6f, -0.9f, -1.0f}, {0.6f, 0.6f, 0.6f}, 30.0f, {0.25f, 0.55f, 0.3f}}};
   constexpr uint32_t width = 160, height = 90, frameNumber = 10;
-  const sim::WaterState water = render::simulateWater(ctx(), s, frameNumber);
+  const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
   ASSERT_GT(render::cameraMedium(s, &water).absorption.w, 0.0f);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 16});
   for (const char* mode : {"accurate", "apparent"}) {

@@ -7,15 +7,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <glm/gtc/constants.hpp>
+#include <optional>
 
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
-#include "render/frame_uniforms.hpp"
 #include "render/renderer.hpp"
-#include "render/sky_model.hpp"
+#include "shading/frame_uniforms.hpp"
+#include "shading/sky_model.hpp"
 #include "shared/shading.h"
 
 namespace tp::test {
@@ -58,8 +58,11 @@ using RenderTest = GpuTest;
 TEST_F(RenderTest, SkyIrradianceOfAUniformSkyIsPiTimesItsRadiance) {
   auto s = uniformSkyScene();
   const shader::Sh9 sh = render::skySh9(s.sky);
-  const glm::vec3 normals[] = {{0.0f, 1.0f, 0.0f},  {1.0f, 0.0f, 0.0f},   {0.0f, 0.0f, -1.0f},
-                               {0.0f, -1.0f, 0.0f}, glm::normalize(glm::vec3(0.3f, 0.8f, -0.5f)),
+  const glm::vec3 normals[] = {{0.0f, 1.0f, 0.0f},
+                               {1.0f, 0.0f, 0.0f},
+                               {0.0f, 0.0f, -1.0f},
+                               {0.0f, -1.0f, 0.0f},
+                               glm::normalize(glm::vec3(0.3f, 0.8f, -0.5f)),
                                glm::normalize(glm::vec3(-0.6f, -0.2f, 0.7f))};
   for (const glm::vec3& n : normals) {
     const glm::vec3 e = shader::sh9Irradiance(sh, n);
@@ -94,7 +97,8 @@ TEST_F(RenderTest, GroundIsLambertianUnderSunAndUniformSky) {
       glm::vec3 albedo = even ? s.ground.albedoA : s.ground.albedoB;
       glm::vec3 expected = albedo / glm::pi<float>() * irradiance;
       glm::vec3 got = pixel(frame, x, y);
-      for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], expected[c], 1e-4f * expected[c]) << x << "," << y << " channel " << c;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(got[c], expected[c], 1e-4f * expected[c]) << x << "," << y << " channel " << c;
       ++checked;
     }
   }
@@ -184,8 +188,8 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   };
   // Frame 0 again and again: no steps to take, and the cached passes (sky,
   // caustics) ran on the first; the camera is away from the water (no camera medium).
-  const std::vector<std::string> opaque{"background", "ground", "pool",    "objects", "ssao",
-                                       "ao blur x",  "ao blur y", "ao apply", "water"};
+  const std::vector<std::string> opaque{"background", "ground",    "pool",     "objects", "ssao",
+                                        "ao blur x",  "ao blur y", "ao apply", "water"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
     all.insert(all.end(), tail.begin(), tail.end());
@@ -283,7 +287,7 @@ TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
   const float ior = s.water.ior;
   const float f0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
   const glm::vec3 irradiance = glm::vec3(u.sunIrradiance) * std::max(u.sunDirection.y, 0.0f) +
-                              shader::sh9Irradiance(u.skySh, glm::vec3(0.0f, 1.0f, 0.0f));
+                               shader::sh9Irradiance(u.skySh, glm::vec3(0.0f, 1.0f, 0.0f));
   const float half = 0.5f * s.water.extent;
   const float floorY = s.ground.height - s.pool.depth;
   auto parityAt = [&](glm::vec2 xz, bool& nearEdge) {
@@ -349,7 +353,6 @@ TEST_F(WaterRenderTest, FramesAreDeterministicAndTheWaterMoves) {
   EXPECT_EQ(c.render({.frame = 0}).rgba, c.render({.frame = 12}).rgba);  // nothing disturbs flat water
 }
 
-
 using AovTest = GpuTest;
 
 // World position, normal and view depth against each pixel's ray cast on the
@@ -378,8 +381,12 @@ TEST_F(AovTest, PositionNormalAndDepthMatchTheRayCast) {
       if (d.y < 0.0f) {
         const glm::vec3 g = eye + ((s.ground.height - eye.y) / d.y) * d;
         const glm::vec3 w = eye + ((s.water.level - eye.y) / d.y) * d;
-        auto inside = [&](glm::vec3 q, float margin) { return std::abs(q.x) < half - margin && std::abs(q.z) < half - margin; };
-        auto outside = [&](glm::vec3 q, float margin) { return std::abs(q.x) > half + margin || std::abs(q.z) > half + margin; };
+        auto inside = [&](glm::vec3 q, float margin) {
+          return std::abs(q.x) < half - margin && std::abs(q.z) < half - margin;
+        };
+        auto outside = [&](glm::vec3 q, float margin) {
+          return std::abs(q.x) > half + margin || std::abs(q.z) > half + margin;
+        };
         if (outside(g, 0.05f)) {
           if (std::abs(g.x) < s.ground.halfExtent && std::abs(g.z) < s.ground.halfExtent) hit = g;
         } else if (inside(g, 0.05f) && inside(w, 0.05f)) {
@@ -487,7 +494,8 @@ TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
       if (d.y >= 0.0f) continue;
       const glm::vec3 g = eye + ((with.ground.height - eye.y) / d.y) * d;
       const glm::vec3 p = eye + ((with.water.level - eye.y) / d.y) * d;
-      if (std::max(std::abs(g.x), std::abs(g.z)) > half - 0.05f || std::max(std::abs(p.x), std::abs(p.z)) > half - 0.05f) {
+      if (std::max(std::abs(g.x), std::abs(g.z)) > half - 0.05f ||
+          std::max(std::abs(p.x), std::abs(p.z)) > half - 0.05f) {
         continue;  // not through the hole onto the water
       }
       float m1 = 0, m2 = 0, m3 = 0;
@@ -510,7 +518,6 @@ TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
   EXPECT_GT(reflecting, 200);
   EXPECT_GT(notReflecting, 2000);
 }
-
 
 using SkyImageTest = GpuTest;
 
@@ -547,7 +554,8 @@ TEST_F(SkyImageTest, ConstantSkyImageLightsTheGroundExactly) {
         }
         ++ground;
       } else if (d.y > 0.05f) {
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(got[c], radiance[c], 1e-3f * radiance[c]) << x << "," << y;  // half texels
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(got[c], radiance[c], 1e-3f * radiance[c]) << x << "," << y;  // half texels
         ++skyPixels;
       }
     }
@@ -570,7 +578,6 @@ TEST(SkyImageCli, MissingOrUnfitSkyImagesFailCleanly) {
                 .find("R, G and B"),
             std::string::npos);
 }
-
 
 // The apparent-depth mode is exact where its assumption holds (flat water over
 // a flat floor at the mean depth: the refracted ray's mean-depth point is its
@@ -611,10 +618,9 @@ TEST_F(WaterRenderTest, ApparentDepthAgreesWhereItsAssumptionHolds) {
   double difference = 0.0;
   for (size_t k = 0; k < ga.rgba.size(); ++k) difference += std::abs(ga.rgba[k] - gb.rgba[k]);
   EXPECT_GT(difference / double(ga.rgba.size()), 1e-3);
-  EXPECT_TRUE(render::findPass(gb.passes, "underwater"));
-  EXPECT_FALSE(render::findPass(ga.passes, "underwater"));
+  EXPECT_TRUE(render::findPass(gb.passes, render::passes::kUnderwater));
+  EXPECT_FALSE(render::findPass(ga.passes, render::passes::kUnderwater));
 }
-
 
 // A sphere on a path stirs calm water; the same sphere held still does not.
 TEST_F(WaterRenderTest, MovingSphereStirsCalmWater) {

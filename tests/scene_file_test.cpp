@@ -39,10 +39,12 @@ TEST(SceneFile, ErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(errorOf(R"({"camera": {"fvo": 35}})"), "shot.json: camera.fvo: is not a known key");
   EXPECT_EQ(errorOf(R"({"lights": []})"), "shot.json: lights: is not a known key");
   EXPECT_EQ(errorOf(R"({"camera": {"fov": "wide"}})"), "shot.json: camera.fov: expected a number, got string");
-  EXPECT_EQ(errorOf(R"({"camera": {"position": [1, 2]}})"), "shot.json: camera.position: expected an array of 3 numbers");
+  EXPECT_EQ(errorOf(R"({"camera": {"position": [1, 2]}})"),
+            "shot.json: camera.position: expected an array of 3 numbers");
   EXPECT_EQ(errorOf(R"({"sky": 3})"), "shot.json: sky: expected an object");
   EXPECT_EQ(errorOf(R"([1, 2])"), "shot.json: the top level: expected an object");
-  EXPECT_EQ(errorOf(R"({"sky": {"texture_width": -5}})"), "shot.json: sky.texture_width: expected a non-negative integer, got -5");
+  EXPECT_EQ(errorOf(R"({"sky": {"texture_width": -5}})"),
+            "shot.json: sky.texture_width: expected a non-negative integer, got -5");
 }
 
 TEST(SceneFile, MalformedAndTruncatedJson) {
@@ -70,7 +72,8 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"camera": {"fov": 180}})").find("camera fov"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"fov": 1e999}})").find("shot.json: not valid JSON"), std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"near": 0}})").find("near"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"camera": {"position": [1, 2, 3], "target": [1, 2, 3]}})").find("target equals its position"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"camera": {"position": [1, 2, 3], "target": [1, 2, 3]}})").find("target equals its position"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})").find("parallel"), std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"sun_radiance": [1, -1, 1]}})").find("sky.sun_radiance must not be negative"),
             std::string::npos);
@@ -80,7 +83,8 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
             std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"clouds": {"shape": 1}}})").find("sky.clouds.shape: is not a known key"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"pool": {"wall_pattern": "stone"}})").find("pool.wall_pattern must be one of"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"wall_pattern": "stone"}})").find("pool.wall_pattern must be one of"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"pool": {"mortar_fraction": 0.6}})").find("pool.mortar_fraction"), std::string::npos);
   EXPECT_NE(errorOf(R"({"pool": {"brick_width": 0.01, "brick_height": 0.1, "mortar_fraction": 0.2}})")
                 .find("must be less than pool.brick_width"),
@@ -98,7 +102,8 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
 // at most 3, and 1 to 64 search steps; each refusal one line naming the key.
 TEST(SceneFile, GlassKeys) {
   const auto s = scene::parseScene(R"({"spheres": [{"material": "glass", "ior": 1.33}, {}],
-                                       "render": {"glass_search_steps": 16}})", "x");
+                                       "render": {"glass_search_steps": 16}})",
+                                   "x");
   ASSERT_EQ(s.spheres.size(), 2u);
   EXPECT_TRUE(scene::isGlass(s.spheres[0]));
   EXPECT_EQ(s.spheres[0].ior, 1.33f);
@@ -111,8 +116,9 @@ TEST(SceneFile, GlassKeys) {
             "shot.json: spheres[].ior = 1.000000 is outside (1, 3]");
   EXPECT_EQ(errorOf(R"({"spheres": [{"ior": 3.5}]})"), "shot.json: spheres[].ior = 3.500000 is outside (1, 3]");
   EXPECT_EQ(errorOf(R"({"spheres": [{"ior": "glass"}]})"), "shot.json: spheres[0].ior: expected a number, got string");
-  EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 0}})").find("render.glass_search_steps = 0.000000 is outside [1"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"render": {"glass_search_steps": 0}})").find("render.glass_search_steps = 0.000000 is outside [1"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 65}})").find("render.glass_search_steps"), std::string::npos);
 }
 
@@ -152,7 +158,8 @@ TEST(SceneFile, DropFrames) {
 
 TEST(SceneFile, Boxes) {
   const auto s = scene::parseScene(
-      R"({"boxes": [{"center": [1, -0.5, 0], "size": [0.2, 0.4, 0.6], "yaw": 30, "albedo": [0.1, 0.2, 0.3]}, {}]})", "x");
+      R"({"boxes": [{"center": [1, -0.5, 0], "size": [0.2, 0.4, 0.6], "yaw": 30, "albedo": [0.1, 0.2, 0.3]}, {}]})",
+      "x");
   ASSERT_EQ(s.boxes.size(), 2u);
   EXPECT_EQ(s.boxes[0].center, glm::vec3(1.0f, -0.5f, 0.0f));
   EXPECT_EQ(s.boxes[0].size, glm::vec3(0.2f, 0.4f, 0.6f));
@@ -162,7 +169,8 @@ TEST(SceneFile, Boxes) {
   EXPECT_EQ(errorOf(R"({"boxes": [{"sise": [1, 1, 1]}]})"), "shot.json: boxes[0].sise: is not a known key");
   EXPECT_EQ(errorOf(R"({"boxes": {"size": [1, 1, 1]}})"), "shot.json: boxes: expected an array of objects");
   EXPECT_NE(errorOf(R"({"boxes": [{"size": [1, 0, 1]}]})").find("shot.json: boxes[].size.y"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"boxes": [{}, {}, {}, {}, {}]})").find("shot.json: boxes: at most 4, got 5"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"boxes": [{}, {}, {}, {}, {}]})").find("shot.json: boxes: at most 4, got 5"),
+            std::string::npos);
 }
 
 }  // namespace tp::test
@@ -180,7 +188,8 @@ TEST(SceneFile, SavedScenesReadBackToTheSameScene) {
   awkward.camera.position = {std::nextafter(3.2f, 4.0f), 1.0f / 3.0f, -4.6e-7f};
   awkward.water.frameTime = 1.0f / 60.0f;
   awkward.water.level = std::nextafter(-0.15f, 0.0f);
-  awkward.water.drops = {{0.1f, -0.7f, 0.123456789f, 1e-6f}, {0.5f, 0.2f, 0.3f, -0.02f, 12}, {0.0f, 0.0f, 0.1f, 0.01f, 1u << 30}};
+  awkward.water.drops = {
+      {0.1f, -0.7f, 0.123456789f, 1e-6f}, {0.5f, 0.2f, 0.3f, -0.02f, 12}, {0.0f, 0.0f, 0.1f, 0.01f, 1u << 30}};
   awkward.spheres[0].path = {{0.0f, {0.0f, -0.2f, 0.0f}}, {2.5f, {1.0f / 7.0f, -0.2f, 0.5f}}};
   awkward.spheres.push_back({.center = {0.3f, 0.5f, 0.1f}, .radius = 0.3f, .material = "glass", .ior = 1.0f / 0.7f});
   awkward.render.glassSearchSteps = 13;

@@ -10,7 +10,7 @@
 #include <optional>
 #include <thread>
 
-#include "app/checkpoint_files.hpp"
+#include "cli/checkpoint_files.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
@@ -61,7 +61,7 @@ TEST_F(CheckpointTest, AResumedRendererDrawsTheSameFrames) {
   const scene::Scene scene = sleepyScene();
   render::Renderer first(ctx(), scene, kW, kH);
   std::vector<std::vector<float>> frames;
-  std::vector<render::WaterCheckpoint> checkpoints;
+  std::vector<sim::WaterCheckpoint> checkpoints;
   std::optional<uint32_t> fellAsleep;
   for (uint32_t f = 0; f <= kLast; ++f) {
     frames.push_back(first.render({.frame = f}).rgba);
@@ -69,7 +69,8 @@ TEST_F(CheckpointTest, AResumedRendererDrawsTheSameFrames) {
     EXPECT_EQ(checkpoints.back().frame, f);
     if (!fellAsleep && checkpoints.back().asleep) fellAsleep = f;
   }
-  ASSERT_TRUE(fellAsleep && *fellAsleep + 2 < kWakeFrame) << "the water did not sleep before the drop that wakes it: " << fellAsleep.value_or(0);
+  ASSERT_TRUE(fellAsleep && *fellAsleep + 2 < kWakeFrame)
+      << "the water did not sleep before the drop that wakes it: " << fellAsleep.value_or(0);
   EXPECT_FALSE(checkpoints[kWakeFrame].asleep) << "the drop on frame " << kWakeFrame << " did not wake the water";
   const uint32_t resumeAt[] = {5, *fellAsleep - 1, *fellAsleep, *fellAsleep + 2, kWakeFrame - 1, kWakeFrame};
   for (const uint32_t k : resumeAt) {
@@ -81,7 +82,7 @@ TEST_F(CheckpointTest, AResumedRendererDrawsTheSameFrames) {
   // The sleep state is part of what the checkpoint must hold: resumed asleep
   // as awake, the water is simulated on and the frames after differ.
   render::Renderer awake(ctx(), scene, kW, kH);
-  render::WaterCheckpoint noSleep = checkpoints[*fellAsleep];
+  sim::WaterCheckpoint noSleep = checkpoints[*fellAsleep];
   noSleep.asleep = false;
   noSleep.quietFrames = 0;
   awake.resume(noSleep);
@@ -96,7 +97,7 @@ TEST_F(CheckpointTest, CheckpointFilesReadBackAndBelongToTheirWater) {
   const scene::Scene scene = sleepyScene();
   render::Renderer r(ctx(), scene, 16, 9);
   for (uint32_t f = 0; f <= 4; ++f) r.render({.frame = f});
-  const render::WaterCheckpoint saved = r.checkpoint();
+  const sim::WaterCheckpoint saved = r.checkpoint();
   const uint64_t fingerprint = app::waterFingerprint(scene);
   app::saveCheckpoint(dir.path().string(), saved, fingerprint);
   EXPECT_FALSE(app::latestCheckpoint(dir.path().string(), 3, fingerprint).has_value());
@@ -123,7 +124,8 @@ TEST(RenderSequence, OneGoEqualsIndependentlyStartedHalves) {
   for (const char* folder : {"one", "halves", "resumed", "water"}) std::filesystem::create_directory(dir.file(folder));
   auto render = [&](const std::string& range, const std::string& folder, const std::string& more) {
     const ProcessResult r = runTidepool(std::string("render --validate ") + kSize + " --frames " + range + " --out " +
-                                            dir.file(folder + "/f.####.exr") + " " + more, dir);
+                                            dir.file(folder + "/f.####.exr") + " " + more,
+                                        dir);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return r;
   };
@@ -174,8 +176,9 @@ TEST(RenderSequence, SignalsStopAfterAWholeFrame) {
     std::filesystem::create_directory(dir.file("f"));
     const std::string pattern = dir.file("f/f.####.exr");
     const std::string command = std::string(TIDEPOOL_EXE) + " render " + kSize + " --frames 0-400 --out " + pattern +
-                                " >" + dir.file("out.txt") + " 2>" + dir.file("err.txt") + " </dev/null & p=$!; echo $p >" +
-                                dir.file("pid.txt") + "; wait $p; echo $? >" + dir.file("rc.txt");
+                                " >" + dir.file("out.txt") + " 2>" + dir.file("err.txt") +
+                                " </dev/null & p=$!; echo $p >" + dir.file("pid.txt") + "; wait $p; echo $? >" +
+                                dir.file("rc.txt");
     std::thread run([&] { std::system(("bash -c '" + command + "'").c_str()); });
     // Wait for two frames, then signal.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -188,7 +191,8 @@ TEST(RenderSequence, SignalsStopAfterAWholeFrame) {
     EXPECT_EQ(std::stoi(readText(dir.file("rc.txt"))), 128 + signal);
     const std::string err = readText(dir.file("err.txt"));
     EXPECT_NE(err.find(std::string("render: stopped by ") + (signal == SIGTERM ? "SIGTERM" : "SIGINT") + " after "),
-              std::string::npos) << err;
+              std::string::npos)
+        << err;
     size_t written = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir.file("f"))) {
       const std::string name = e.path().filename().string();
@@ -199,34 +203,43 @@ TEST(RenderSequence, SignalsStopAfterAWholeFrame) {
     EXPECT_GE(written, 2u);
     EXPECT_LT(written, 401u);
     // The rest, resumed; then the last frames equal a run straight to them.
-    const ProcessResult rest = runTidepool(std::string("render ") + kSize + " --frames 0-" + std::to_string(written + 2) +
-                                               " --resume --out " + pattern, dir);
+    const ProcessResult rest = runTidepool(
+        std::string("render ") + kSize + " --frames 0-" + std::to_string(written + 2) + " --resume --out " + pattern,
+        dir);
     ASSERT_EQ(rest.exitCode, 0) << rest.err;
     std::filesystem::create_directory(dir.file("g"));
     ASSERT_EQ(runTidepool(std::string("render ") + kSize + " --frames " + std::to_string(written) + "-" +
-                              std::to_string(written + 2) + " --out " + dir.file("g/f.####.exr"), dir).exitCode, 0);
-    for (uint32_t f = uint32_t(written); f <= written + 2; ++f) expectSameImage(frameFile(dir, "f", f), frameFile(dir, "g", f));
+                              std::to_string(written + 2) + " --out " + dir.file("g/f.####.exr"),
+                          dir)
+                  .exitCode,
+              0);
+    for (uint32_t f = uint32_t(written); f <= written + 2; ++f)
+      expectSameImage(frameFile(dir, "f", f), frameFile(dir, "g", f));
   }
 }
 
-// The farm recipes of the README: GNU parallel on one machine, and the Slurm
+// The farm recipes of docs/rendering.md: GNU parallel on one machine, and the Slurm
 // job-array script run as its array tasks would run it; both give the frames
 // of one go.
 TEST(RenderSequence, FarmScriptsRenderTheFramesOfOneGo) {
   ScratchDir dir;
   for (const char* folder : {"one", "parallel", "slurm"}) std::filesystem::create_directory(dir.file(folder));
-  ASSERT_EQ(runTidepool(std::string("render ") + kSize + " --frames 0-6 --out " + dir.file("one/f.####.exr"), dir).exitCode, 0);
+  ASSERT_EQ(
+      runTidepool(std::string("render ") + kSize + " --frames 0-6 --out " + dir.file("one/f.####.exr"), dir).exitCode,
+      0);
   const std::string tools = std::string(TIDEPOOL_SOURCE_DIR) + "/tools/farm/";
   const std::string exe = std::string("TIDEPOOL='") + TIDEPOOL_EXE + "' ";
   const std::string log = " >" + dir.file("farm.log") + " 2>&1";
   int status = std::system((exe + "bash '" + tools + "parallel-shot.sh' 2 0 6 3 '" + dir.file("water-p") + "' -- " +
-                            kSize + " --out '" + dir.file("parallel/f.####.exr") + "'" + log).c_str());
+                            kSize + " --out '" + dir.file("parallel/f.####.exr") + "'" + log)
+                               .c_str());
   ASSERT_EQ(status, 0) << readText(dir.file("farm.log"));
   for (int task = 0; task <= 3; ++task) {  // task 3 lies past the shot's end: nothing to do
-    status = std::system((exe + "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SCENE='" + TIDEPOOL_SOURCE_DIR +
-                          "/scenes/default.json' LAST=6 CHUNK=3 OUT='" + dir.file("slurm/f.####.exr") +
-                          "' CHECKPOINTS='" + dir.file("water-s") + "' bash '" + tools + "slurm-shot.sbatch' " + kSize +
-                          log).c_str());
+    status =
+        std::system((exe + "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SCENE='" + TIDEPOOL_SOURCE_DIR +
+                     "/scenes/default.json' LAST=6 CHUNK=3 OUT='" + dir.file("slurm/f.####.exr") + "' CHECKPOINTS='" +
+                     dir.file("water-s") + "' bash '" + tools + "slurm-shot.sbatch' " + kSize + log)
+                        .c_str());
     ASSERT_EQ(status, 0) << readText(dir.file("farm.log"));
   }
   for (uint32_t f = 0; f <= 6; ++f) {

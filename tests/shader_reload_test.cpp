@@ -20,7 +20,6 @@ struct ReloadGuard {
   ~ReloadGuard() { gpu::forgetReloadedShaders(); }
 };
 
-
 }  // namespace
 
 using ShaderReloadTest = GpuTest;
@@ -34,7 +33,7 @@ TEST_F(ShaderReloadTest, RendererMadeAgainGoesOnWhereThePreviousWas) {
   camera.position.x += 0.5f;
   first.setCamera(camera);
   first.addDrop({0.3f, -0.4f, 0.2f, 0.05f});
-  render::Renderer again(first);
+  render::Renderer again(render::GoOnFrom{first});
   for (uint32_t frame = 4; frame <= 6; ++frame) {
     SCOPED_TRACE("frame " + std::to_string(frame));
     const auto a = first.render({.frame = frame, .ldr = true});
@@ -70,7 +69,7 @@ TEST_F(ShaderReloadTest, ReloadedShaderReachesThePipelinesAndABrokenOneKeepsTheO
   gpu::ShaderReload reload = gpu::reloadShaders(shaders);
   EXPECT_EQ(reload.changed, std::vector<std::string>{"tonemap.comp.spv"});
   EXPECT_TRUE(reload.errors.empty());
-  render::Renderer reloaded(renderer);
+  render::Renderer reloaded(render::GoOnFrom{renderer});
   const auto darker = reloaded.render({.frame = 2, .ldr = true});
   const auto expected = halfExposureRenderer.render({.frame = 2, .ldr = true});
   EXPECT_TRUE(darker.srgb == expected.srgb);
@@ -83,7 +82,7 @@ TEST_F(ShaderReloadTest, ReloadedShaderReachesThePipelinesAndABrokenOneKeepsTheO
   ASSERT_EQ(reload.errors.size(), 1u);
   EXPECT_EQ(reload.errors[0].rfind("tonemap.comp.spv: ", 0), 0u) << reload.errors[0];
   EXPECT_NE(reload.errors[0].find("tonemap.comp:2"), std::string::npos) << reload.errors[0];
-  render::Renderer kept(reloaded);
+  render::Renderer kept(render::GoOnFrom{reloaded});
   EXPECT_TRUE(kept.render({.frame = 2, .ldr = true}).srgb == darker.srgb);
 }
 

@@ -37,7 +37,8 @@ TEST_F(SimAccuracy, GpuMatchesCpuReferenceAfter1000Steps) {
   constexpr uint32_t kSteps = 1000;
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
     for (double maxSlope : {0.0, 0.15}) {
-      sim::WaterParams p{.n = 50, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.3, .boundary = boundary, .maxSlope = maxSlope};
+      sim::WaterParams p{
+          .n = 50, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.3, .boundary = boundary, .maxSlope = maxSlope};
       const double dt = 0.5 * p.h() / p.waveSpeed;
       const auto initial = randomState(p.n, 0.0, 0.02, 7);
       const double uScale = 0.01, vScale = p.waveSpeed / p.h() * uScale;
@@ -76,7 +77,8 @@ TEST_F(SimAccuracy, MaxSlopeClampIsActiveInTheComparedCase) {
 TEST_F(SimAccuracy, TiledKernelIsBitIdenticalToOneStepPerDispatch) {
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
     for (uint32_t n : {7u, 37u}) {
-      sim::WaterParams p{.n = n, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.1, .boundary = boundary, .maxSlope = 0.15};
+      sim::WaterParams p{
+          .n = n, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.1, .boundary = boundary, .maxSlope = 0.15};
       const auto initial = randomState(n, 0.5, 0.02, 11);
       const double dt = 0.6 * p.h();
       sim::GpuStepper one(ctx(), p, initial, sim::StepKernel::OnePerDispatch);

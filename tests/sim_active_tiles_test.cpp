@@ -75,8 +75,8 @@ TEST_F(SimActiveTiles, MatchesFullGridBitwiseWithDropsAndSpheres) {
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
     for (double maxSlope : {0.0, 0.15}) {
       for (double damping : {0.0, 0.4}) {
-        const sim::WaterParams p{.n = 256, .extent = 1.0, .waveSpeed = 1.0, .damping = damping, .boundary = boundary,
-                                 .maxSlope = maxSlope};
+        const sim::WaterParams p{
+            .n = 256, .extent = 1.0, .waveSpeed = 1.0, .damping = damping, .boundary = boundary, .maxSlope = maxSlope};
         const double dt = dtOf(p);
         SCOPED_TRACE("boundary " + sim::toString(boundary) + ", maxSlope " + std::to_string(maxSlope) + ", damping " +
                      std::to_string(damping));
@@ -135,7 +135,8 @@ TEST_F(SimActiveTiles, MatchesFullGridAcrossReset) {
 // rule chooses in between): still the full grid's bits.
 TEST_F(SimActiveTiles, SwitchingBetweenFullAndActiveStaysBitwise) {
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
-    const sim::WaterParams p{.n = 256, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.0, .boundary = boundary, .maxSlope = 0.15};
+    const sim::WaterParams p{
+        .n = 256, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.0, .boundary = boundary, .maxSlope = 0.15};
     const double dt = dtOf(p);
     SCOPED_TRACE("boundary " + sim::toString(boundary));
     expectSameAsFullGrid(ctx(), p, sim::flatState(p.n, kLevel), [&](sim::GpuStepper& s) {
@@ -187,7 +188,8 @@ TEST_F(SimActiveTiles, ListsOnlyTilesWithinReachOfTheDrop) {
 // step, no tile is dispatched at all; forced full, every tile is, every step.
 TEST_F(SimActiveTiles, CalmWaterDispatchesNoTiles) {
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
-    const sim::WaterParams p{.n = 300, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.2, .boundary = boundary, .maxSlope = 0.1};
+    const sim::WaterParams p{
+        .n = 300, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.2, .boundary = boundary, .maxSlope = 0.1};
     sim::GpuStepper s(ctx(), p, sim::flatState(p.n, kLevel), sim::StepKernel::ActiveTiles);
     s.setTileDispatch(sim::TileDispatch::Active);
     s.step(1, dtOf(p));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/image_io.hpp"
+#include "io/water_state_file.hpp"
 #include "process.hpp"
 #include "sim/water_state.hpp"
 
@@ -38,7 +39,7 @@ TEST(SimCli, WritesTheStateAsAnExrOfUAndV) {
   EXPECT_EQ(image.width, 48u);
   EXPECT_EQ(image.height, 48u);
   EXPECT_EQ(image.channels, (std::vector<std::string>{"u", "v"}));
-  const sim::WaterState s = sim::readStateExr(out);
+  const sim::WaterState s = io::readStateExr(out);
   float maxU = 0.0f;
   for (float u : s.u) maxU = std::max(maxU, std::abs(u));
   EXPECT_GT(maxU, 0.01f);
@@ -49,10 +50,13 @@ TEST(SimCli, WritesTheStateAsAnExrOfUAndV) {
 TEST(SimCli, ResumesExactlyWhereAnotherRunStopped) {
   ScratchDir dir;
   const std::string common = "sim --validate --grid 40 --dt 0.02 --damping 0.3 --boundary wrap ";
-  ASSERT_EQ(runTidepool(common + "--steps 30 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("a.exr"), dir).exitCode, 0);
-  ASSERT_EQ(runTidepool(common + "--steps 20 --init " + dir.file("a.exr") + " --out " + dir.file("b.exr"), dir).exitCode, 0);
-  ASSERT_EQ(runTidepool(common + "--steps 50 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("c.exr"), dir).exitCode, 0);
-  const auto b = sim::readStateExr(dir.file("b.exr")), c = sim::readStateExr(dir.file("c.exr"));
+  ASSERT_EQ(runTidepool(common + "--steps 30 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("a.exr"), dir).exitCode,
+            0);
+  ASSERT_EQ(
+      runTidepool(common + "--steps 20 --init " + dir.file("a.exr") + " --out " + dir.file("b.exr"), dir).exitCode, 0);
+  ASSERT_EQ(runTidepool(common + "--steps 50 --init drop:0.8,1.2,0.3,0.05 --out " + dir.file("c.exr"), dir).exitCode,
+            0);
+  const auto b = io::readStateExr(dir.file("b.exr")), c = io::readStateExr(dir.file("c.exr"));
   EXPECT_EQ(b.u, c.u);
   EXPECT_EQ(b.v, c.v);
 }
@@ -70,7 +74,8 @@ TEST(SimCli, BadParametersFailCleanly) {
   expectCleanFailure("sim --grid 64 --boundary mirror" + out, dir, none);
   expectCleanFailure("sim --grid 64 --scheme rk4" + out, dir, none);
   expectCleanFailure("sim --grid 64 --dt 0.01 --frame-time 0.02" + out, dir, none);
-  EXPECT_NE(expectCleanFailure("sim --grid 64 --wave-speed nan" + out, dir, none).find("wave speed"), std::string::npos);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --wave-speed nan" + out, dir, none).find("wave speed"),
+            std::string::npos);
   expectCleanFailure("sim --grid 64 --extent -1" + out, dir, none);
   expectCleanFailure("sim --grid 64 --damping inf" + out, dir, none);
   expectCleanFailure("sim --grid 64 --frame-time 0" + out, dir, none);
@@ -99,7 +104,8 @@ TEST(SimCli, BadInitialStatesFailCleanly) {
             std::string::npos);
   expectCleanFailure("sim --init " + dir.file("truncated.exr") + out, dir, files);
   expectCleanFailure("sim --init " + dir.file("text.exr") + out, dir, files);
-  EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2" + out, dir, files).find("expected 4"), std::string::npos);
+  EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2" + out, dir, files).find("expected 4"),
+            std::string::npos);
   EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2,x,4" + out, dir, files).find("'x'"), std::string::npos);
   expectCleanFailure("sim --grid 64 --init drop:1,1,0,0.1" + out, dir, files);
   expectCleanFailure("sim --grid 64 --init mode:1.5,1,0.1" + out, dir, files);
@@ -108,12 +114,11 @@ TEST(SimCli, BadInitialStatesFailCleanly) {
 // The unstable scheme blows up; the run stops with an error and writes nothing.
 TEST(SimCli, BlowUpStopsWithAnErrorAndNoFile) {
   ScratchDir dir;
-  EXPECT_NE(expectCleanFailure("sim --grid 32 --scheme explicit --steps 3000 --health-every 100 --out " + dir.file("x.exr"),
-                               dir, {})
+  EXPECT_NE(expectCleanFailure(
+                "sim --grid 32 --scheme explicit --steps 3000 --health-every 100 --out " + dir.file("x.exr"), dir, {})
                 .find("blew up"),
             std::string::npos);
 }
-
 
 // The benchmark runs end to end and writes its CSV (its figures are not
 // asserted: speed is a benchmark's business, not a test's).
@@ -144,7 +149,8 @@ TEST(BenchCli, TilesBenchmarkWritesItsTable) {
 TEST(BenchCli, FrameBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;
   const std::string csv = dir.file("frame.csv");
-  ProcessResult r = runTidepool("bench frame --validate --resolution 48x32 --frames 2 --csv " + csv + " --plot ''", dir);
+  ProcessResult r =
+      runTidepool("bench frame --validate --resolution 48x32 --frames 2 --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header.rfind("variant,skipping,gpu_ms,wall_ms,passes,dispatches,draws,workgroups,", 0), 0u)
@@ -164,9 +170,8 @@ TEST(BenchCli, FrameBenchmarkWritesItsTableAndRefusesBadInput) {
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");
-  ProcessResult r = runTidepool("bench water --validate --resolutions 48x32 --samples 2 --repeats 1 --frame 3 --csv " + csv +
-                                    " --plot ''",
-                                dir);
+  ProcessResult r = runTidepool(
+      "bench water --validate --resolutions 48x32 --samples 2 --repeats 1 --frame 3 --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header.rfind("view,width,height,mode,refraction_ms,", 0), 0u) << table.header;
@@ -185,9 +190,10 @@ TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
 TEST(BenchCli, IblBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;
   const std::string csv = dir.file("ibl.csv"), glossyCsv = dir.file("glossy.csv");
-  ProcessResult r = runTidepool("bench ibl --validate --width 64 --samples 16,64 --rotations 2 --repeats 1 --csv " + csv +
-                                    " --plot '' --glossy-samples 16,64 --glossy-csv " + glossyCsv + " --glossy-plot ''",
-                                dir);
+  ProcessResult r =
+      runTidepool("bench ibl --validate --width 64 --samples 16,64 --rotations 2 --repeats 1 --csv " + csv +
+                      " --plot '' --glossy-samples 16,64 --glossy-csv " + glossyCsv + " --glossy-plot ''",
+                  dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
   const CsvShape table = csvShape(csv);

@@ -13,7 +13,8 @@ TEST(CpuStepper, MatchesTheReference) {
   constexpr uint64_t kSteps = 300;
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
     for (double maxSlope : {0.0, 0.15}) {
-      sim::WaterParams p{.n = 37, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.2, .boundary = boundary, .maxSlope = maxSlope};
+      sim::WaterParams p{
+          .n = 37, .extent = 1.0, .waveSpeed = 1.0, .damping = 0.2, .boundary = boundary, .maxSlope = maxSlope};
       const double dt = 0.55 * p.h();
       const auto initial = randomState(p.n, 0.0, 0.02, 13);
       sim::ReferenceSim reference(p, initial);

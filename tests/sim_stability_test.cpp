@@ -39,7 +39,10 @@ TEST_F(SimStability, StressSweepOfLambdaAndDamping) {
   constexpr uint64_t kSteps = 100000, kCheckEvery = 1000;
   for (double lambda : {0.1, 0.4, 0.7}) {
     for (double gamma : {0.0, 0.5, 5.0}) {
-      sim::WaterParams p{.n = 16, .extent = 1.0, .waveSpeed = 1.0, .damping = gamma,
+      sim::WaterParams p{.n = 16,
+                         .extent = 1.0,
+                         .waveSpeed = 1.0,
+                         .damping = gamma,
                          .boundary = lambda == 0.4 ? sim::Boundary::Wrap : sim::Boundary::Clamp};
       const double dt = lambda * p.h() / p.waveSpeed;
       sim::GpuStepper gpu(ctx(), p, randomState(p.n, 0.0, 0.1, uint32_t(lambda * 100 + gamma)), sim::StepKernel::Tiled,

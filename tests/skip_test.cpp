@@ -10,22 +10,23 @@
 
 #include "gpu/submit.hpp"
 #include "gpu_test.hpp"
+#include "graph/frame_graph.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
-#include "render/frame_graph.hpp"
-#include "render/objects_model.hpp"
+#include "render/pass_kinds.hpp"
 #include "render/renderer.hpp"
-#include "render/water_model.hpp"
-#include "render/water_sleep.hpp"
+#include "shading/objects_model.hpp"
+#include "shading/water_model.hpp"
+#include "sim/water_sleep.hpp"
 
 namespace tp::test {
 namespace {
 
 constexpr uint32_t kWidth = 96, kHeight = 64;
 
-bool recorded(const render::RenderedFrame& f, const std::string& pass) { return render::findPass(f.passes, pass); }
+bool recorded(const render::RenderedFrame& f, const render::PassKind& pass) { return render::findPass(f.passes, pass); }
 
-const render::RecordedPass* find(const render::RenderedFrame& f, const std::string& pass) {
+const render::RecordedPass* find(const render::RenderedFrame& f, const render::PassKind& pass) {
   return render::findPass(f.passes, pass);
 }
 
@@ -49,7 +50,7 @@ struct Variant {
   std::string name;
   std::function<void(scene::Scene&, const std::string& dir)> change;
   // What the skipping renderer must never record, on any frame.
-  std::vector<std::string> neverPasses;
+  std::vector<const render::PassKind*> neverPasses;
   std::vector<std::string> neverResources;
 };
 
@@ -63,38 +64,52 @@ using SkipTest = GpuTest;
 TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
   ScratchDir dir;
   const std::vector<Variant> variants{
-      {"everything on", [](scene::Scene&, const std::string&) {}, {"camera medium"}, {}},
-      {"no water", [](scene::Scene& s, const std::string&) { s.water.enabled = false; },
-       {"simulate", "water", "caustics", "camera medium", "underwater"}, {}},
-      {"calm water", [](scene::Scene& s, const std::string&) { s.water.drops.clear(); }, {"simulate", "camera medium"}, {}},
-      {"AO off", [](scene::Scene& s, const std::string&) { s.ao.enabled = false; },
-       {"ssao", "ao blur x", "ao blur y", "ao upsample", "ao apply"}, {"view normal", "ambient"}},
+      {"everything on", [](scene::Scene&, const std::string&) {}, {&render::passes::kCameraMedium}, {}},
+      {"no water",
+       [](scene::Scene& s, const std::string&) { s.water.enabled = false; },
+       {&render::passes::kSimulate, &render::passes::kWater, &render::passes::kCaustics, &render::passes::kCameraMedium,
+        &render::passes::kUnderwater},
+       {}},
+      {"calm water",
+       [](scene::Scene& s, const std::string&) { s.water.drops.clear(); },
+       {&render::passes::kSimulate, &render::passes::kCameraMedium},
+       {}},
+      {"AO off",
+       [](scene::Scene& s, const std::string&) { s.ao.enabled = false; },
+       {&render::passes::kSsao, &render::passes::kAoBlurX, &render::passes::kAoBlurY, &render::passes::kAoUpsample,
+        &render::passes::kAoApply},
+       {"view normal", "ambient"}},
       {"sky image",
        [](scene::Scene& s, const std::string& d) {
          io::FloatImage sky{64, 32, {"R", "G", "B"}, {}};
-         for (int k = 0; k < 64 * 32; ++k) sky.pixels.insert(sky.pixels.end(), {0.3f, 0.4f + 0.001f * float(k % 64), 0.6f});
+         for (int k = 0; k < 64 * 32; ++k)
+           sky.pixels.insert(sky.pixels.end(), {0.3f, 0.4f + 0.001f * float(k % 64), 0.6f});
          io::writeExr(d + "/sky.exr", sky, std::vector<io::PixelType>(3, io::PixelType::Float));
          s.sky.image = d + "/sky.exr";
        },
-       {"sky"}, {}},
+       {&render::passes::kSky},
+       {}},
       {"objects out of view",
        [](scene::Scene& s, const std::string&) {
          s.spheres[0].center = {8.0f, 0.5f, 12.0f};  // behind the camera
          s.boxes.push_back({.center = {-30.0f, 0.5f, 0.0f}});
        },
-       {"objects", "camera medium"}, {}},
+       {&render::passes::kObjects, &render::passes::kCameraMedium},
+       {}},
       {"sphere above the water",
        [](scene::Scene& s, const std::string&) {
          s.spheres[0].center = {0.3f, 0.9f, -0.2f};  // bottom 0.45 m over the rim: left out of the casts below
          s.boxes.push_back({.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}});  // reaches into the pool
        },
-       {"camera medium"}, {}},
+       {&render::passes::kCameraMedium},
+       {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};
          s.camera.target = {0.0f, -0.3f, -0.5f};
        },
-       {}, {}},
+       {},
+       {}},
   };
   for (const Variant& v : variants) {
     SCOPED_TRACE(v.name);
@@ -109,7 +124,7 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       const auto a = skipping.render({.frame = frame});
       const auto b = everything.render({.frame = frame});
       EXPECT_EQ(differingPixels(a, b), 0u);
-      for (const auto& pass : v.neverPasses) EXPECT_FALSE(recorded(a, pass)) << pass;
+      for (const auto* pass : v.neverPasses) EXPECT_FALSE(recorded(a, *pass)) << pass->name;
       for (const auto& resource : v.neverResources) EXPECT_FALSE(anyPassUses(a, resource)) << resource;
       EXPECT_LE(a.passes.size(), b.passes.size());
       EXPECT_LE(a.counts.dispatches, b.counts.dispatches);
@@ -117,18 +132,18 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       EXPECT_LE(a.counts.workgroups, b.counts.workgroups);
       // Passes whose inputs do not change run on the first frame only.
       if (s.sky.image.empty()) {
-        EXPECT_EQ(recorded(a, "sky"), i == 0);
+        EXPECT_EQ(recorded(a, render::passes::kSky), i == 0);
       }
       if (s.water.enabled && s.render.caustics) {
-        EXPECT_EQ(recorded(a, "caustics"), i == 0 || i == 3 || recorded(a, "simulate"));
-        EXPECT_TRUE(recorded(b, "caustics"));
+        EXPECT_EQ(recorded(a, render::passes::kCaustics), i == 0 || i == 3 || recorded(a, render::passes::kSimulate));
+        EXPECT_TRUE(recorded(b, render::passes::kCaustics));
       }
       // With nothing skipped, the scene's every pass is there.
       if (s.water.enabled && frame > 0) {
-        EXPECT_TRUE(recorded(b, "simulate"));
-        EXPECT_TRUE(recorded(b, "camera medium"));
+        EXPECT_TRUE(recorded(b, render::passes::kSimulate));
+        EXPECT_TRUE(recorded(b, render::passes::kCameraMedium));
       }
-      EXPECT_TRUE(recorded(b, "objects"));
+      EXPECT_TRUE(recorded(b, render::passes::kObjects));
       EXPECT_TRUE(anyPassUses(b, "view normal"));
     }
   }
@@ -139,7 +154,8 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
 TEST(SkipObjects, ObjectsWhollyOverTheWaterAreLeftOutOfTheCastsBelowIt) {
   scene::Scene s = scene::defaultScene();
   s.spheres = {{{0.0f, 1.0f, 0.0f}, 0.5f}, {{1.0f, 0.2f, 0.0f}, 0.3f}, {{-1.0f, 0.49f, 0.0f}, 0.5f}};
-  s.boxes = {{.center = {0.0f, 0.5f, 1.0f}, .size = {1.0f, 0.8f, 1.0f}}, {.center = {0.0f, 0.3f, -1.0f}, .size = {1.0f, 0.8f, 1.0f}}};
+  s.boxes = {{.center = {0.0f, 0.5f, 1.0f}, .size = {1.0f, 0.8f, 1.0f}},
+             {.center = {0.0f, 0.3f, -1.0f}, .size = {1.0f, 0.8f, 1.0f}}};
   const shader::SceneObjects objects = render::sceneObjects(s, 0.0f);
   EXPECT_EQ(objects.count, glm::uvec4(3, 2, 2, 1));
   // Below first, each group in the scene's order.
@@ -161,18 +177,18 @@ TEST_F(SkipTest, CountersMatchWhatThePassesRecord) {
   render::Renderer renderer(ctx(), s, kWidth, kHeight);
   renderer.render({.frame = 0});
   const auto f = renderer.render({.frame = 1});
-  const uint32_t substeps = render::waterSubsteps(s.water);
+  const uint32_t substeps = sim::waterSubsteps(s.water);
   const uint32_t n = s.water.grid;
   const uint64_t tiles = (n / 16) * (n / 16);
-  const render::RecordedPass* simulate = find(f, "simulate");
+  const render::RecordedPass* simulate = find(f, render::passes::kSimulate);
   ASSERT_NE(simulate, nullptr);
   EXPECT_EQ(simulate->counts.dispatches, substeps + 2);
   EXPECT_EQ(simulate->counts.workgroups, uint64_t(substeps - 1) * (n / 64) * n + tiles + 1 + tiles);
   EXPECT_EQ(simulate->counts.draws, 0u);
-  EXPECT_EQ(find(f, "ground")->counts.draws, 1u);
-  EXPECT_EQ(find(f, "pool")->counts.draws, 2u);     // walls, floor
-  EXPECT_EQ(find(f, "objects")->counts.draws, 1u);  // the sphere
-  EXPECT_EQ(find(f, "water")->counts.draws, 2u);  // the mesh seen from above, then from below
+  EXPECT_EQ(find(f, render::passes::kGround)->counts.draws, 1u);
+  EXPECT_EQ(find(f, render::passes::kPool)->counts.draws, 2u);     // walls, floor
+  EXPECT_EQ(find(f, render::passes::kObjects)->counts.draws, 1u);  // the sphere
+  EXPECT_EQ(find(f, render::passes::kWater)->counts.draws, 2u);    // the mesh seen from above, then from below
   gpu::CommandCounts sum;
   for (const auto& p : f.passes) sum += p.counts;
   EXPECT_EQ(sum, f.counts);
@@ -193,9 +209,9 @@ TEST_F(SkipTest, ActiveTilesAreCountedWhenTheyAreLaunched) {
   renderer.addDrop(drop);
   renderer.render({.frame = 1});  // after a start every tile is stepped once
   const auto f = renderer.render({.frame = 2});
-  const uint32_t substeps = render::waterSubsteps(s.water);
+  const uint32_t substeps = sim::waterSubsteps(s.water);
   const uint32_t n = s.water.grid, perSide = n / 16;
-  const render::RecordedPass* simulate = find(f, "simulate");
+  const render::RecordedPass* simulate = find(f, render::passes::kSimulate);
   ASSERT_NE(simulate, nullptr);
   EXPECT_EQ(simulate->counts.dispatches, 2 * substeps + 1);
   const uint64_t stats = uint64_t(perSide) * perSide;
@@ -203,7 +219,7 @@ TEST_F(SkipTest, ActiveTilesAreCountedWhenTheyAreLaunched) {
   const uint64_t listed = simulate->counts.workgroups - substeps - stats;
 
   const double h = double(s.water.extent) / n;
-  const glm::vec3 c = render::worldToGrid(s.water, {drop.x, 0.0f, drop.z});
+  const glm::vec3 c = sim::worldToGrid(s.water, {drop.x, 0.0f, drop.z});
   const int lo = int(std::floor((c.x - drop.radius) / h)), hi = int(std::ceil((c.x + drop.radius) / h));
   uint64_t bound = 0;
   for (uint32_t k = substeps + 1; k <= 2 * substeps; ++k) {
@@ -224,37 +240,51 @@ TEST_F(SkipTest, ActiveTilesAreCountedWhenTheyAreLaunched) {
 // resource it uses changes, by a pass's write or the host's touch.
 TEST_F(SkipTest, CachedPassRunsOnlyWhenAnInputChanged) {
   auto make = [&](const char* name) {
-    return gpu::createBuffer(ctx(), 256, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst |
-                                             vk::BufferUsageFlagBits::eTransferSrc,
+    return gpu::createBuffer(ctx(), 256,
+                             vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst |
+                                 vk::BufferUsageFlagBits::eTransferSrc,
                              gpu::MemoryUse::Device, name);
   };
   gpu::Buffer input = make("input"), cachedOut = make("cached output"), result = make("result");
   render::FrameGraph graph;
-  const auto in = graph.buffer("input", input), out = graph.buffer("cached output", cachedOut),
-             res = graph.buffer("result", result);
+  const render::GraphBuffer in = graph.buffer("input", input), out = graph.buffer("cached output", cachedOut),
+                            res = graph.buffer("result", result);
   bool writeInput = true;
   int cachedRuns = 0;
-  auto fill = [](const gpu::Buffer& b) {
-    return [&b](render::PassContext& pc) { pc.cmd.fillBuffer(b.handle(), 0, 256, 7u); };
-  };
-  graph.pass("write input", {{in, render::Use::TransferWrite}}, fill(input),
+  static constexpr render::PassKind kWriteInput{"write input"}, kCached{"cached"}, kUse{"use"};
+  graph.pass(kWriteInput,
+             [&](render::PassBuilder& pass) {
+               const gpu::Buffer& b = pass.attach(in, render::Use::TransferWrite);
+               return [&b](render::PassContext& pc) { pc.cmd.fillBuffer(b.handle(), 0, 256, 7u); };
+             },
              {.cached = false, .runIf = [&] { return writeInput; }});
-  graph.pass("cached", {{in, render::Use::TransferRead}, {out, render::Use::TransferWrite}},
-             [&](render::PassContext& pc) {
-               ++cachedRuns;
-               pc.cmd.copyBuffer(input.handle(), cachedOut.handle(), vk::BufferCopy{0, 0, 256});
+  graph.pass(kCached,
+             [&](render::PassBuilder& pass) {
+               const gpu::Buffer& from = pass.attach(in, render::Use::TransferRead);
+               const gpu::Buffer& to = pass.attach(out, render::Use::TransferWrite);
+               return [&](render::PassContext& pc) {
+                 ++cachedRuns;
+                 pc.cmd.copyBuffer(from.handle(), to.handle(), vk::BufferCopy{0, 0, 256});
+               };
              },
              {.cached = true, .runIf = {}});
-  graph.pass("use", {{out, render::Use::TransferRead}, {res, render::Use::TransferWrite}}, [&](render::PassContext& pc) {
-    pc.cmd.copyBuffer(cachedOut.handle(), result.handle(), vk::BufferCopy{0, 0, 256});
+  graph.pass(kUse, [&](render::PassBuilder& pass) {
+    const gpu::Buffer& from = pass.attach(out, render::Use::TransferRead);
+    const gpu::Buffer& to = pass.attach(res, render::Use::TransferWrite);
+    return [&from, &to](render::PassContext& pc) {
+      pc.cmd.copyBuffer(from.handle(), to.handle(), vk::BufferCopy{0, 0, 256});
+    };
   });
   gpu::DescriptorArena arena(ctx());
   auto frame = [&] {
     std::vector<std::string> names;
-    gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
-      render::PassContext pc{cmd, arena};
-      for (const auto& p : graph.record(pc, std::vector{res})) names.push_back(p.name);
-    }, "graph test");
+    gpu::submitAndWait(
+        ctx(),
+        [&](const vk::raii::CommandBuffer& cmd) {
+          render::PassContext pc{cmd, arena};
+          for (const auto& p : graph.record(pc, std::vector{res.ref})) names.push_back(p.name);
+        },
+        "graph test");
     return names;
   };
   using Names = std::vector<std::string>;
@@ -262,7 +292,7 @@ TEST_F(SkipTest, CachedPassRunsOnlyWhenAnInputChanged) {
   writeInput = false;
   EXPECT_EQ(frame(), (Names{"use"}));  // the input unchanged: the cached output stands
   EXPECT_EQ(frame(), (Names{"use"}));
-  graph.touch(in);  // the host changed the input
+  graph.touch(in.ref);  // the host changed the input
   EXPECT_EQ(frame(), (Names{"cached", "use"}));
   writeInput = true;
   EXPECT_EQ(frame(), (Names{"write input", "cached", "use"}));
@@ -295,21 +325,21 @@ TEST_F(SkipTest, RestingWaterSleepsWithinTheBoundAndADropWakesIt) {
     }
   }
   ASSERT_GT(asleepAt, 0u) << "the water never slept";
-  EXPECT_LE(energyAtSleep, render::sleepRule(s.water).energyPerArea);
+  EXPECT_LE(energyAtSleep, sim::sleepRule(s.water).energyPerArea);
   // The stated error: the rule bounds the RMS difference of the normals by
-  // 2 kSleepSlope = 1e-4 rad. A pixel's radiance moves with its normal by its
+  // 2 sim::kSleepSlope = 1e-4 rad. A pixel's radiance moves with its normal by its
   // gradient in angle: a smooth sky or floor (relative gradient of order 1 per
   // radian) moves by ~1e-4, so the mean relative difference stays under 1e-4;
   // a pixel on an edge (tile, caustic) may move more, but no channel by 1%.
-  // Measured: mean 2e-5, worst 3.3e-3 (README, "What a frame skips").
+  // Measured: mean 2e-5, worst 3.3e-3 (docs/frame-skipping.md).
   render::Renderer everything(ctx(), s, kWidth, kHeight, {.skipping = false});
   for (uint32_t later : {asleepAt + 5, asleepAt + 60}) {
     SCOPED_TRACE("frame " + std::to_string(later));
     const auto a = skipping.render({.frame = later});
     const auto b = everything.render({.frame = later});
     EXPECT_TRUE(a.waterAsleep);
-    EXPECT_FALSE(recorded(a, "simulate"));
-    EXPECT_FALSE(recorded(a, "caustics"));
+    EXPECT_FALSE(recorded(a, render::passes::kSimulate));
+    EXPECT_FALSE(recorded(a, render::passes::kCaustics));
     EXPECT_FALSE(b.waterAsleep);
     double sum = 0.0, worst = 0.0;
     size_t off = 0;
@@ -321,9 +351,10 @@ TEST_F(SkipTest, RestingWaterSleepsWithinTheBoundAndADropWakesIt) {
       off += d > 1e-3;
     }
     const double mean = sum / (double(a.rgba.size()) * 3 / 4);
-    std::printf("sleeping vs simulated at frame %u (asleep at %u, energy %.3g): mean relative %.3g, worst %.3g, %zu "
-                "channels over 1e-3\n",
-                later, asleepAt, energyAtSleep, mean, worst, off);
+    std::printf(
+        "sleeping vs simulated at frame %u (asleep at %u, energy %.3g): mean relative %.3g, worst %.3g, %zu "
+        "channels over 1e-3\n",
+        later, asleepAt, energyAtSleep, mean, worst, off);
     EXPECT_LT(mean, 1e-4);
     EXPECT_LT(worst, 1e-2);
   }
@@ -332,8 +363,8 @@ TEST_F(SkipTest, RestingWaterSleepsWithinTheBoundAndADropWakesIt) {
   skipping.addDrop({0.0f, 0.0f, 0.4f, 0.05f});
   const auto after = skipping.render({.frame = asleepAt + 61});
   EXPECT_FALSE(after.waterAsleep);
-  EXPECT_TRUE(recorded(after, "simulate"));
-  EXPECT_TRUE(recorded(after, "caustics"));
+  EXPECT_TRUE(recorded(after, render::passes::kSimulate));
+  EXPECT_TRUE(recorded(after, render::passes::kCaustics));
   EXPECT_GT(differingPixels(before, after), size_t(kWidth) * kHeight / 20);
 }
 

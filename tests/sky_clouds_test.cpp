@@ -7,7 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <random>
 
-#include "render/sky_model.hpp"
+#include "shading/sky_model.hpp"
 #include "shared/sky.h"
 
 namespace tp::test {
@@ -58,7 +58,8 @@ TEST(SkyClouds, OvercastIrradianceMatchesTheClosedForm) {
   sky.clouds.color = glm::vec3(1.3f, 1.2f, 0.9f);
   const glm::dvec3 c(sky.zenith), k(sky.clouds.color);
   const double a = shader::kCloudHorizonFade;
-  const glm::dvec3 exact = glm::pi<double>() * c + glm::two_pi<double>() * (k - c) * (0.35 * a * a + (1.0 - a * a) / 2.0);
+  const glm::dvec3 exact =
+      glm::pi<double>() * c + glm::two_pi<double>() * (k - c) * (0.35 * a * a + (1.0 - a * a) / 2.0);
   const glm::dvec3 e = irradianceUp(sky);
   for (int ch = 0; ch < 3; ++ch) {
     EXPECT_NEAR(e[ch], exact[ch], 1e-3 * exact[ch]) << "channel " << ch;

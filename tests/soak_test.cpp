@@ -11,9 +11,9 @@
 // the run without it does not grow at all.)
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <fstream>
-#include <unistd.h>
 
 #include "gpu/context.hpp"
 #include "gpu/submit.hpp"
@@ -58,17 +58,20 @@ long soak(const gpu::Context& ctx, sim::Boundary boundary) {
     return glm::vec3(float(2.0 + 1.2 * std::cos(a)), 0.0f, float(2.0 + 1.2 * std::sin(a)));
   };
   for (uint64_t done = 0; done < kSteps; done += kStepsPerSubmit) {
-    gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-      for (uint64_t s = done; s < done + kStepsPerSubmit; ++s) {
-        stepper.recordSphereMove(cmd, sphereAt(s), sphereAt(s + 1), 0.3f, 0.0f);
-        if (s % kStepsPerDrop == 0) {
-          const float x = float((s * 7919) % 397) / 397.0f * 4.0f, z = float((s * 104729) % 389) / 389.0f * 4.0f;
-          stepper.recordDrop(cmd, {x, z}, 0.2f, (drops++ % 2 ? 1.0f : -1.0f) * 0.02f);
-        }
-        stepper.recordSteps(cmd, 1, dt);
-      }
-      stepper.recordStats(cmd, dt);
-    }, "soak steps");
+    gpu::submitAndWait(
+        ctx,
+        [&](const vk::raii::CommandBuffer& cmd) {
+          for (uint64_t s = done; s < done + kStepsPerSubmit; ++s) {
+            stepper.recordSphereMove(cmd, sphereAt(s), sphereAt(s + 1), 0.3f, 0.0f);
+            if (s % kStepsPerDrop == 0) {
+              const float x = float((s * 7919) % 397) / 397.0f * 4.0f, z = float((s * 104729) % 389) / 389.0f * 4.0f;
+              stepper.recordDrop(cmd, {x, z}, 0.2f, (drops++ % 2 ? 1.0f : -1.0f) * 0.02f);
+            }
+            stepper.recordSteps(cmd, 1, dt);
+          }
+          stepper.recordStats(cmd, dt);
+        },
+        "soak steps");
     const sim::WaterStats stats = stepper.readStats();
     EXPECT_EQ(stats.nonFinite, 0u) << "after " << done + kStepsPerSubmit << " steps";
     EXPECT_NO_THROW(sim::checkHealth(stats, done + kStepsPerSubmit, 1.0)) << sim::describe(stats);

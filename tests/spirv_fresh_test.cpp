@@ -33,8 +33,8 @@ TEST(SpirvFresh, CommittedModulesMatchAFreshCompile) {
   auto committedNames = spvNames(committed);
   ASSERT_FALSE(freshNames.empty());
   for (const auto& name : freshNames) {
-    EXPECT_TRUE(committedNames.count(name)) << "spirv/" << name
-                                            << " is missing; run: cmake --build build --target update_spirv";
+    EXPECT_TRUE(committedNames.count(name))
+        << "spirv/" << name << " is missing; run: cmake --build build --target update_spirv";
     if (committedNames.count(name)) {
       EXPECT_EQ(bytes(fresh / name), bytes(committed / name))
           << "spirv/" << name << " is stale; run: cmake --build build --target update_spirv";

@@ -29,7 +29,8 @@ TEST(SsaoCli, AoChannelsFollowRgba) {
         lowest[c] = std::min(lowest[c], v);
       }
     }
-    for (int c = 0; c < 3; ++c) EXPECT_LT(lowest[c], 0.9f) << preset << " " << image.channels[4 + c] << ": no crease darkened";
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(lowest[c], 0.9f) << preset << " " << image.channels[4 + c] << ": no crease darkened";
   }
 }
 
@@ -44,8 +45,8 @@ TEST(SsaoCli, NoAoLeavesTheAmbientAlone) {
     darker += a.pixels[k] < b.pixels[k] - 1e-6f;
     brighter += a.pixels[k] > b.pixels[k] + 1e-6f;
   }
-  EXPECT_GT(darker, 20);     // AO takes light from the creases...
-  EXPECT_EQ(brighter, 0);    // ...and adds none anywhere
+  EXPECT_GT(darker, 20);   // AO takes light from the creases...
+  EXPECT_EQ(brighter, 0);  // ...and adds none anywhere
 }
 
 TEST(SsaoCli, BadAoInputFailsCleanly) {

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "gpu_test.hpp"
-#include "render/gbuffer_world.hpp"
-#include "render/reference_ao.hpp"
+#include "reference/gbuffer_world.hpp"
+#include "reference/reference_ao.hpp"
 #include "render/renderer.hpp"
-#include "render/ssao_model.hpp"
 #include "scene/scene.hpp"
+#include "shading/ssao_model.hpp"
 
 namespace tp::test {
 namespace {
@@ -70,7 +70,8 @@ TEST(SsaoKernel, RandomBaselineIsFixedAndInsideTheHemisphere) {
     EXPECT_EQ(a.samples[i], b.samples[i]);  // a fixed seed: the same kernel every run
     EXPECT_GE(a.samples[i].z, 0.0f);
     EXPECT_LE(glm::length(glm::vec3(a.samples[i])), 1.0f);
-    EXPECT_LE(glm::length(glm::vec3(a.samples[i])), 0.1f + 0.9f * float(i * i) / 4096.0f + 1e-6f);  // LearnOpenGL's scale
+    EXPECT_LE(glm::length(glm::vec3(a.samples[i])),
+              0.1f + 0.9f * float(i * i) / 4096.0f + 1e-6f);  // LearnOpenGL's scale
   }
   for (uint32_t i = 0; i < 16; ++i) EXPECT_LE(std::max(std::abs(a.noise[i].x), std::abs(a.noise[i].y)), 1.0f);
 }
@@ -114,7 +115,8 @@ TEST_F(SsaoRenderTest, PlaneFacingTheCameraIsUnoccluded) {
 // the edge.
 TEST_F(SsaoRenderTest, CornerDarkensTowardTheEdge) {
   scene::Scene s = groundOnly();
-  s.boxes.push_back({.center = {0.0f, 1.0f, 0.0f}, .size = {2.0f, 2.0f, 4.0f}, .yawDegrees = 0.0f, .albedo = {0.5f, 0.5f, 0.5f}});
+  s.boxes.push_back(
+      {.center = {0.0f, 1.0f, 0.0f}, .size = {2.0f, 2.0f, 4.0f}, .yawDegrees = 0.0f, .albedo = {0.5f, 0.5f, 0.5f}});
   s.camera.position = {4.0f, 2.5f, 0.5f};
   s.camera.target = {1.2f, 0.3f, 0.0f};
   const auto f = renderAo(s, 160, 120);
@@ -138,11 +140,12 @@ TEST_F(SsaoRenderTest, CornerDarkensTowardTheEdge) {
   for (size_t b = 0; b < sum.size(); ++b) {
     ASSERT_GT(count[b], 5) << "bin " << b;
     mean[b] = sum[b] / count[b];
-    std::printf("corner: d in [%.2f, %.2f) m: mean AO %.3f over %d pixels\n", edges[b], edges[b + 1], mean[b], count[b]);
+    std::printf("corner: d in [%.2f, %.2f) m: mean AO %.3f over %d pixels\n", edges[b], edges[b + 1], mean[b],
+                count[b]);
   }
   for (size_t b = 1; b < mean.size(); ++b) EXPECT_GE(mean[b], mean[b - 1] - 0.01) << "bin " << b;
-  EXPECT_LT(mean.front(), 0.8);        // at the edge: the wall hides much of the hemisphere
-  EXPECT_GT(mean.back(), 0.98);        // beyond the radius (0.5 m): nothing to hide
+  EXPECT_LT(mean.front(), 0.8);  // at the edge: the wall hides much of the hemisphere
+  EXPECT_GT(mean.back(), 0.98);  // beyond the radius (0.5 m): nothing to hide
 }
 
 // Positions from depth and the inverse projection (what SSAO sees) against
@@ -151,7 +154,8 @@ TEST_F(SsaoRenderTest, CornerDarkensTowardTheEdge) {
 TEST_F(SsaoRenderTest, ReconstructedPositionsMatchTheRasterisedOnes) {
   scene::Scene s = scene::defaultScene();
   s.water.enabled = false;
-  s.boxes.push_back({.center = {-1.0f, 0.3f, 1.0f}, .size = {0.6f, 0.6f, 0.6f}, .yawDegrees = 30.0f, .albedo = {0.5f, 0.5f, 0.5f}});
+  s.boxes.push_back(
+      {.center = {-1.0f, 0.3f, 1.0f}, .size = {0.6f, 0.6f, 0.6f}, .yawDegrees = 30.0f, .albedo = {0.5f, 0.5f, 0.5f}});
   const auto f = renderAo(s, 160, 90, true);
   const render::WorldGbuffer g = render::worldGbuffer(f);
   int compared = 0, mismatched = 0;
@@ -253,8 +257,8 @@ TEST_F(SsaoRenderTest, DefaultSceneAgreesWithTheRayTracedReference) {
     options.radius = s.ao.radius;
     options.exactSpheres = false;
     options.originOffset = g.uncertainty;
-    const auto reference = render::referenceAmbientOcclusion(s, nullptr, 10 * s.water.frameTime, g.position, g.normal,
-                                                              w, h, options);
+    const auto reference =
+        render::referenceAmbientOcclusion(s, nullptr, 10 * s.water.frameTime, g.position, g.normal, w, h, options);
     double sum = 0.0, unoccluded = 0.0;
     int pixels = 0;
     for (size_t k = 0; k < reference.size(); ++k) {

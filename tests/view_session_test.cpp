@@ -8,11 +8,11 @@
 
 #include <filesystem>
 
-#include "app/view_session.hpp"
 #include "gpu_test.hpp"
 #include "process.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
+#include "viewer/view_session.hpp"
 
 namespace tp::test {
 namespace {
@@ -114,8 +114,8 @@ TEST_F(ViewSessionTest, ImpossibleScenesChangeNothing) {
 // The save-scene command writes the scene as it stands, read back equal.
 TEST_F(ViewSessionTest, SaveSceneWritesTheSceneAsItStands) {
   ScratchDir dir;
-  app::ViewSession s(std::make_unique<render::Renderer>(ctx(), scene::defaultScene(), kWidth, kHeight), kWidth,
-                     kHeight, dir.path().string(), TIDEPOOL_SHADERS_DIR);
+  app::ViewSession s(std::make_unique<render::Renderer>(ctx(), scene::defaultScene(), kWidth, kHeight), kWidth, kHeight,
+                     dir.path().string(), TIDEPOOL_SHADERS_DIR);
   next(s);
   ASSERT_TRUE(s.apply(app::command::Set{"render.exposure", "0.5"})) << s.message();
   ASSERT_TRUE(s.apply(app::command::SaveScene{})) << s.message();

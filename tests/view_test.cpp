@@ -11,15 +11,15 @@
 #include <filesystem>
 #include <map>
 
-#include "app/camera_controller.hpp"
-#include "app/view_session.hpp"
-#include "app/water_pick.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_file.hpp"
+#include "viewer/camera_controller.hpp"
+#include "viewer/view_session.hpp"
+#include "viewer/water_pick.hpp"
 #include "xvfb.hpp"
 
 namespace tp::test {
@@ -87,8 +87,11 @@ class ViewTest : public GpuTest {};
 TEST_F(ViewTest, ScriptedDropAndResizeShowTheRenderersFrameWithNoValidationMessage) {
   ScratchDir dir;
   const std::string shot = dir.file("shot.png");
-  const ProcessResult r = runViewer("--size 160x90 --frames 60 --script-drop 40:0,0.4,0.5,0.08 "
-                                    "--script-resize 20:240x160 --screenshot " + shot, dir);
+  const ProcessResult r = runViewer(
+      "--size 160x90 --frames 60 --script-drop 40:0,0.4,0.5,0.08 "
+      "--script-resize 20:240x160 --screenshot " +
+          shot,
+      dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("view: 60 frames at 160x90"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("window 240x160"), std::string::npos) << "the swapchain did not follow the resize:\n" << r.out;
@@ -126,7 +129,10 @@ TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
   constexpr double kOrbitX = 60.0, kOrbitY = -20.0, kZoom = 2.0;
   const glm::dvec3 kFly(1.0, 0.5, 0.25);  // forward, right, seconds
   app::CameraController camera(scene.camera);
-  auto orbit = [&] { camera.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel, kOrbitY * app::CameraControls::kOrbitRadiansPerPixel); };
+  auto orbit = [&] {
+    camera.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel,
+                 kOrbitY * app::CameraControls::kOrbitRadiansPerPixel);
+  };
   orbit();
   camera.zoom(kZoom);
   camera.fly(kFly.x, kFly.y, kFly.z);
@@ -138,17 +144,21 @@ TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
   const glm::dvec2 grab = pixelCentre(app::worldToPixel(moved, kWidth, kHeight, glm::dvec3(sphere.center)));
   const glm::dvec2 drag =
       pixelCentre(app::worldToPixel(moved, kWidth, kHeight, glm::dvec3(sphere.center) + glm::dvec3(-0.6, 0.0, 0.5)));
-  const glm::dvec2 drop = pixelCentre(app::worldToPixel(moved, kWidth, kHeight, {-0.7, double(scene.water.level), 0.9}));
+  const glm::dvec2 drop =
+      pixelCentre(app::worldToPixel(moved, kWidth, kHeight, {-0.7, double(scene.water.level), 0.9}));
 
   ScratchDir dir;
   const std::string shot = dir.file("shot.png");
-  const ProcessResult r = runViewer(
-      "--size 160x90 --frames 40 --save-dir " + dir.file("") + " --screenshot " + shot +
-          " --script 2:orbit:" + std::to_string(kOrbitX) + "," + std::to_string(kOrbitY) +
-          " --script 3:zoom:" + std::to_string(kZoom) + " --script 4:fly:1,0.5,0.25 --script 10:pause --script 20:step"
-          " --script 22:grab:" + pixelArg(grab) + " --script 22:drag:" + pixelArg(drag) + " --script 23:release"
-          " --script 25:drop:" + pixelArg(drop) + " --script 30:pause --script 39:save",
-      dir);
+  const ProcessResult r = runViewer("--size 160x90 --frames 40 --save-dir " + dir.file("") + " --screenshot " + shot +
+                                        " --script 2:orbit:" + std::to_string(kOrbitX) + "," + std::to_string(kOrbitY) +
+                                        " --script 3:zoom:" + std::to_string(kZoom) +
+                                        " --script 4:fly:1,0.5,0.25 --script 10:pause --script 20:step"
+                                        " --script 22:grab:" +
+                                        pixelArg(grab) + " --script 22:drag:" + pixelArg(drag) +
+                                        " --script 23:release"
+                                        " --script 25:drop:" +
+                                        pixelArg(drop) + " --script 30:pause --script 39:save",
+                                    dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   // Frames shown 0-9 are 0-9; paused at 10 for shown 10-19; the step makes
   // it 11 for 20-29; running again, shown 30-39 are 11-20.
@@ -161,10 +171,13 @@ TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
   // The same calls in process, frame by frame as the viewer renders them.
   render::Renderer renderer(ctx(), scene, kWidth, kHeight);
   app::CameraController same(scene.camera);
-  auto renderFrame = [&](uint32_t frame, bool hdr = false) { return renderer.render({.frame = frame, .hdr = hdr, .ldr = true}); };
+  auto renderFrame = [&](uint32_t frame, bool hdr = false) {
+    return renderer.render({.frame = frame, .hdr = hdr, .ldr = true});
+  };
   renderFrame(0);
   renderFrame(1);
-  same.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel, kOrbitY * app::CameraControls::kOrbitRadiansPerPixel);
+  same.orbit(-kOrbitX * app::CameraControls::kOrbitRadiansPerPixel,
+             kOrbitY * app::CameraControls::kOrbitRadiansPerPixel);
   renderer.setCamera(same.camera());
   renderFrame(2);
   same.zoom(kZoom);
@@ -207,7 +220,8 @@ TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
   // this camera differs (on 1518 of the 14400 pixels, measured).
   render::Renderer still(ctx(), scene, kWidth, kHeight);
   still.setCamera(moved);
-  EXPECT_GT(differingPixels(shown, still.render({.frame = 20, .hdr = false, .ldr = true}).srgb), size_t(kWidth) * kHeight / 100);
+  EXPECT_GT(differingPixels(shown, still.render({.frame = 20, .hdr = false, .ldr = true}).srgb),
+            size_t(kWidth) * kHeight / 100);
 }
 
 // Paused, the frame number holds while the camera still moves: ten frames
@@ -233,7 +247,8 @@ TEST_F(ViewTest, PauseHoldsTheFrameNumberWhileTheCameraMoves) {
   EXPECT_GT(differingPixels(shown, renderer.render({.frame = 15, .hdr = false, .ldr = true}).srgb),
             size_t(kWidth) * kHeight / 100);
   render::Renderer unmoved(ctx(), scene, kWidth, kHeight);
-  EXPECT_GT(differingPixels(shown, unmoved.render({.frame = 5, .hdr = false, .ldr = true}).srgb), size_t(kWidth) * kHeight / 100);
+  EXPECT_GT(differingPixels(shown, unmoved.render({.frame = 5, .hdr = false, .ldr = true}).srgb),
+            size_t(kWidth) * kHeight / 100);
 }
 
 // The reload key, scripted: shaders compiled again from a copy of the
@@ -251,8 +266,8 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   std::string tonemap = readText((halved / "tonemap.comp").string());
   const std::string exposure = "params.exposure)";
   ASSERT_NE(tonemap.find(exposure), std::string::npos);
-  writeText((halved / "tonemap.comp").string(), tonemap.replace(tonemap.find(exposure), exposure.size(),
-                                                                "0.5 * params.exposure)"));
+  writeText((halved / "tonemap.comp").string(),
+            tonemap.replace(tonemap.find(exposure), exposure.size(), "0.5 * params.exposure)"));
   writeText((broken / "tonemap.comp").string(), "#version 450\nvoid main() { broken }\n");
 
   const scene::Scene scene = scene::defaultScene();
@@ -264,13 +279,15 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   };
 
   const std::string shot = dir.file("halved.png");
-  ProcessResult r = runViewer("--size 160x90 --frames 9 --shader-dir '" + halved.string() + "' --script 4:reload --screenshot " + shot, dir);
+  ProcessResult r = runViewer(
+      "--size 160x90 --frames 9 --shader-dir '" + halved.string() + "' --script 4:reload --screenshot " + shot, dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("shader reload: 1 changed, 0 failed\n  tonemap.comp.spv\n"), std::string::npos) << r.out;
   EXPECT_EQ(differingPixels(pngBytes(shot), frame8(half)), 0u);
 
   const std::string kept = dir.file("kept.png");
-  r = runViewer("--size 160x90 --frames 9 --shader-dir '" + broken.string() + "' --script 4:reload --screenshot " + kept, dir);
+  r = runViewer(
+      "--size 160x90 --frames 9 --shader-dir '" + broken.string() + "' --script 4:reload --screenshot " + kept, dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("shader reload: tonemap.comp.spv: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("tonemap.comp:2"), std::string::npos) << r.err;
@@ -304,24 +321,40 @@ TEST(View, KeysAndMouseReachTheHandler) {
   const std::string script =
       "set -e\n"
       // The panel would cover this small window and, with the window focused, take the mouse: hidden.
-      "'" TIDEPOOL_EXE "' view --validate --no-panel --size 160x90 --save-dir '" + dir.file("") + "' >'" + dir.file("out.txt") +
-      "' 2>'" + dir.file("err.txt") + "' </dev/null &\n"
+      "'" TIDEPOOL_EXE "' view --validate --no-panel --size 160x90 --save-dir '" +
+      dir.file("") + "' >'" + dir.file("out.txt") + "' 2>'" + dir.file("err.txt") +
+      "' </dev/null &\n"
       "v=$!\n"
       "w=$(xdotool search --sync --onlyvisible --name 'tidepool view' | head -1)\n"
-      "xdotool key " + w + "space\n"
-      "xdotool mousemove " + w + at(centre) + " mousedown 1 mousemove " + w + at(centre + 0.5 * shift) +
-      " mousemove " + w + at(centre + shift) + " mouseup 1\n"
-      "xdotool mousemove " + w + at({-0.9, double(scene.water.level), 0.3}) + " click 1\n"
-      "xdotool mousemove " + w + "150 10 mousedown 3 mousemove " + w + "120 20 mouseup 3\n"
-      "xdotool key " + w + "p\n"
+      "xdotool key " +
+      w +
+      "space\n"
+      "xdotool mousemove " +
+      w + at(centre) + " mousedown 1 mousemove " + w + at(centre + 0.5 * shift) + " mousemove " + w +
+      at(centre + shift) +
+      " mouseup 1\n"
+      "xdotool mousemove " +
+      w + at({-0.9, double(scene.water.level), 0.3}) +
+      " click 1\n"
+      "xdotool mousemove " +
+      w + "150 10 mousedown 3 mousemove " + w +
+      "120 20 mouseup 3\n"
+      "xdotool key " +
+      w +
+      "p\n"
       // Escape only once the save is written: closing is checked before the input is handled.
-      "for i in $(seq 300); do ls '" + dir.file("") + "' | grep -q '^view-.*exr$' && break; sleep 0.2; done\n"
+      "for i in $(seq 300); do ls '" +
+      dir.file("") +
+      "' | grep -q '^view-.*exr$' && break; sleep 0.2; done\n"
       // The key's release may find the window gone (BadWindow): the viewer's exit status is the script's.
-      "xdotool key " + w + "Escape || true\n"
+      "xdotool key " +
+      w +
+      "Escape || true\n"
       "wait $v\n";
   writeText(dir.file("drive.sh"), script);
   const int status = std::system(("DISPLAY=" + x.display() + " timeout 300 bash " + dir.file("drive.sh")).c_str());
-  const ProcessResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(dir.file("out.txt")), readText(dir.file("err.txt"))};
+  const ProcessResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(dir.file("out.txt")),
+                        readText(dir.file("err.txt"))};
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("drop at x "), std::string::npos) << r.out;
   // The sphere follows the drag in its plane: 0.5 m along -x, 0.4 m along +z,
@@ -363,12 +396,11 @@ TEST(View, KeysAndMouseReachTheHandler) {
 TEST(View, PngScreenshotIsTheFrameRenderWrites) {
   ScratchDir dir;
   const std::string shot = dir.file("shot.png"), png = dir.file("render.png");
-  const ProcessResult r =
-      runViewer("--size 160x90 --frames 60 --script-resize 30:320x180 --screenshot " + shot, dir);
+  const ProcessResult r = runViewer("--size 160x90 --frames 60 --script-resize 30:320x180 --screenshot " + shot, dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("window 320x180"), std::string::npos) << r.out;
-  const ProcessResult rendered =
-      runTidepool("render --validate --width 160 --height 90 --frame 59 --out " + dir.file("render.exr") + " --png " + png, dir);
+  const ProcessResult rendered = runTidepool(
+      "render --validate --width 160 --height 90 --frame 59 --out " + dir.file("render.exr") + " --png " + png, dir);
   ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
   const std::vector<uint8_t> shown = pngBytes(shot);
   expectAPicture(shown);
@@ -387,10 +419,12 @@ TEST(View, PngScreenshotIsTheFrameRenderWrites) {
 TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
   ScratchDir dir;
   const std::string shot = dir.file("shot.png"), saved = dir.file("saved.json"), png = dir.file("render.png");
-  const ProcessResult r = runViewer("--size 160x90 --frames 60 --script 12:drop:70,70 --script-resize 20:240x160 "
-                                    "--script 25:set:render.refraction=apparent --script 30:set:ao.preset=fast "
-                                    "--script 35:set:water.ior=1.4 --script 59:save-scene:" + saved +
-                                    " --profile --screenshot " + shot, dir);
+  const ProcessResult r = runViewer(
+      "--size 160x90 --frames 60 --script 12:drop:70,70 --script-resize 20:240x160 "
+      "--script 25:set:render.refraction=apparent --script 30:set:ao.preset=fast "
+      "--script 35:set:water.ior=1.4 --script 59:save-scene:" +
+          saved + " --profile --screenshot " + shot,
+      dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
   EXPECT_NE(r.out.find("drop at x"), std::string::npos) << "the click missed the water:\n" << r.out;
   // --profile: the last frame's passes, the apparent mode's copy of the pool among them.
@@ -405,8 +439,11 @@ TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
   ASSERT_EQ(scene.water.drops.size(), scene::defaultScene().water.drops.size() + 1);
   EXPECT_EQ(scene.water.drops.back().frame, 12u);  // clicked while frame 11 showed: first seen in frame 12
 
-  const ProcessResult rendered = runTidepool("render --validate --scene " + saved + " --width 160 --height 90 "
-                                             "--frame 59 --out " + dir.file("render.exr") + " --png " + png, dir);
+  const ProcessResult rendered = runTidepool("render --validate --scene " + saved +
+                                                 " --width 160 --height 90 "
+                                                 "--frame 59 --out " +
+                                                 dir.file("render.exr") + " --png " + png,
+                                             dir);
   ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
   const std::vector<uint8_t> shown = pngBytes(shot);
   expectAPicture(shown);

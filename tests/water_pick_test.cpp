@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "app/water_pick.hpp"
 #include "scene/scene.hpp"
 #include "sim/water_state.hpp"
+#include "viewer/water_pick.hpp"
 
 namespace tp::test {
 namespace {
@@ -72,7 +72,8 @@ TEST(WaterPick, TheRayThroughAPixelMeetsFlatWaterWhereTheClosedFormSays) {
     for (double px = 0.0; px < kW; px += 7.5) {
       const glm::dvec2 pixel(px, py);
       const glm::dvec2 ndc = 2.0 * pixel / glm::dvec2(kW, kH) - 1.0;
-      const glm::dvec3 direction = glm::normalize(forward + right * (tanHalf * aspect * ndc.x) - up * (tanHalf * ndc.y));
+      const glm::dvec3 direction =
+          glm::normalize(forward + right * (tanHalf * aspect * ndc.x) - up * (tanHalf * ndc.y));
       const Ray ray = app::pixelRay(camera, kW, kH, pixel);
       EXPECT_EQ(ray.origin, eye);
       EXPECT_NEAR(glm::length(ray.direction - direction), 0.0, 1e-6) << px << "," << py;
@@ -106,13 +107,14 @@ TEST(WaterPick, TheRayThroughAPixelMeetsFlatWaterWhereTheClosedFormSays) {
 // rounding of the stored heights (measured: 3.8e-9 m at most).
 TEST(WaterPick, ATiltedPlaneIsHitWhereTheClosedFormSays) {
   const scene::Water water = defaultWater();
-  for (const glm::dvec3 plane : {glm::dvec3(0.08, 0.0, 0.02), glm::dvec3(0.0, -0.11, 0.03), glm::dvec3(0.05, 0.07, -0.01)}) {
+  for (const glm::dvec3 plane :
+       {glm::dvec3(0.08, 0.0, 0.02), glm::dvec3(0.0, -0.11, 0.03), glm::dvec3(0.05, 0.07, -0.01)}) {
     const double a = plane.x, c = plane.y, b = plane.z;
     const sim::WaterState state = planeState(water, a, c, b);
     for (const Ray ray : {towards({3.2, 2.4, 4.6}, {-0.3, -0.15, 0.4}), towards({-2.5, 0.5, 0.1}, {1.0, -0.2, -0.6}),
                           towards({0.3, 1.0, -0.2}, {0.31, -1.0, -0.22})}) {
       const double t = (double(water.level) + b + a * ray.origin.x + c * ray.origin.z - ray.origin.y) /
-                        (ray.direction.y - a * ray.direction.x - c * ray.direction.z);
+                       (ray.direction.y - a * ray.direction.x - c * ray.direction.z);
       const auto hit = app::pickWater(ray, water, &state);
       ASSERT_TRUE(hit);
       EXPECT_NEAR(glm::length(*hit - ray.at(t)), 0.0, 1e-6) << a << " " << c << " " << b;
@@ -145,11 +147,11 @@ TEST(WaterPick, RaysThatMissTheSquareOrPointUpMeetNothing) {
   const scene::Water water = defaultWater();  // the square |x|, |z| < 2
   const sim::WaterState flat = sim::flatState(water.grid);
   for (const sim::WaterState* state : {&flat, static_cast<const sim::WaterState*>(nullptr)}) {
-    EXPECT_FALSE(app::pickWater(towards({0.0, 2.0, 0.0}, {0.0, 3.0, 0.5}), water, state));     // up
-    EXPECT_FALSE(app::pickWater(towards({0.0, 2.0, 0.0}, {2.5, -0.15, 0.0}), water, state));   // beyond the edge
-    EXPECT_FALSE(app::pickWater(Ray{{3.0, 2.0, 0.0}, {0.0, -1.0, 0.0}}, water, state));        // beside the square
-    EXPECT_FALSE(app::pickWater(Ray{{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}, water, state));         // level, above
-    EXPECT_FALSE(app::pickWater(towards({5.0, 1.0, 5.0}, {9.0, -0.15, 9.0}), water, state));   // away from it
+    EXPECT_FALSE(app::pickWater(towards({0.0, 2.0, 0.0}, {0.0, 3.0, 0.5}), water, state));    // up
+    EXPECT_FALSE(app::pickWater(towards({0.0, 2.0, 0.0}, {2.5, -0.15, 0.0}), water, state));  // beyond the edge
+    EXPECT_FALSE(app::pickWater(Ray{{3.0, 2.0, 0.0}, {0.0, -1.0, 0.0}}, water, state));       // beside the square
+    EXPECT_FALSE(app::pickWater(Ray{{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}, water, state));        // level, above
+    EXPECT_FALSE(app::pickWater(towards({5.0, 1.0, 5.0}, {9.0, -0.15, 9.0}), water, state));  // away from it
   }
 }
 
@@ -166,8 +168,8 @@ TEST(WaterPick, RaySphereMatchesTheClosedForm) {
   const Ray ray{{0.0, 0.0, -5.0}, {0.0, 0.0, 1.0}};
   // The axis passes 0.5 from the centre: the chord's near end at 5 - sqrt(1 - 0.25).
   EXPECT_NEAR(*app::raySphere(ray, {0.3, 0.4, 0.0}, 1.0), 5.0 - std::sqrt(0.75), 1e-12);
-  EXPECT_FALSE(app::raySphere(ray, {2.0, 0.0, 0.0}, 1.0));     // passes beside it
-  EXPECT_FALSE(app::raySphere(ray, {0.0, 0.0, -9.0}, 1.0));    // behind the origin
+  EXPECT_FALSE(app::raySphere(ray, {2.0, 0.0, 0.0}, 1.0));               // passes beside it
+  EXPECT_FALSE(app::raySphere(ray, {0.0, 0.0, -9.0}, 1.0));              // behind the origin
   EXPECT_NEAR(*app::raySphere(ray, {0.0, 0.0, -5.0}, 0.7), 0.7, 1e-12);  // from inside: the far side
   // A slanted ray, against the closed form in full.
   const Ray slanted = towards({1.0, 2.0, 3.0}, {-0.5, 0.1, 0.2});
@@ -200,8 +202,8 @@ TEST(WaterPick, RayPlaneMeetsTheHorizontalPlaneAtItsHeight) {
   // 2.25 / 2 of the way from (1, 2, 3) to the origin.
   EXPECT_NEAR(hit->x, 1.0 * (1.0 - 2.25 / 2.0), 1e-12);
   EXPECT_NEAR(hit->z, 3.0 * (1.0 - 2.25 / 2.0), 1e-12);
-  EXPECT_FALSE(app::rayPlaneY(ray, 2.5, 100.0));                          // behind
-  EXPECT_FALSE(app::rayPlaneY(ray, -0.25, 1.0));                          // beyond the distance
+  EXPECT_FALSE(app::rayPlaneY(ray, 2.5, 100.0));                                    // behind
+  EXPECT_FALSE(app::rayPlaneY(ray, -0.25, 1.0));                                    // beyond the distance
   EXPECT_FALSE(app::rayPlaneY(Ray{{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}, 0.0, 100.0));  // parallel
 }
 

@@ -11,8 +11,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libembree-dev python3-matplotlib
   xvfb xauth xdotool  # the viewer's tests open windows in Xvfb (xauth for xvfb-run) and type and click in them
-  parallel  # the README's recipe for a shot on one machine (tools/farm/parallel-shot.sh), tested
+  parallel  # the recipe in docs/rendering.md for a shot on one machine (tools/farm/parallel-shot.sh), tested
   clang libclang-rt-14-dev  # the sanitized CPU build and its libFuzzer targets (build-fuzz/)
+  clang-format  # the house style, checked by the test `format`
 )
 
 missing=()

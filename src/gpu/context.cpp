@@ -28,8 +28,7 @@ bool hasLayer(const vk::raii::Context& context, const char* name) {
   return false;
 }
 
-vk::raii::Instance createInstance(const vk::raii::Context& context, const ContextOptions& options,
-                                  ValidationLog* log) {
+vk::raii::Instance createInstance(const vk::raii::Context& context, const ContextOptions& options, ValidationLog* log) {
   if (context.enumerateInstanceVersion() < VK_API_VERSION_1_3) {
     throw std::runtime_error("the Vulkan loader is older than 1.3; tidepool needs Vulkan 1.3");
   }
@@ -73,11 +72,16 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, const Contex
 
 int typeRank(vk::PhysicalDeviceType type) {
   switch (type) {
-    case vk::PhysicalDeviceType::eDiscreteGpu: return 0;
-    case vk::PhysicalDeviceType::eIntegratedGpu: return 1;
-    case vk::PhysicalDeviceType::eVirtualGpu: return 2;
-    case vk::PhysicalDeviceType::eCpu: return 3;
-    default: return 4;
+    case vk::PhysicalDeviceType::eDiscreteGpu:
+      return 0;
+    case vk::PhysicalDeviceType::eIntegratedGpu:
+      return 1;
+    case vk::PhysicalDeviceType::eVirtualGpu:
+      return 2;
+    case vk::PhysicalDeviceType::eCpu:
+      return 3;
+    default:
+      return 4;
   }
 }
 
@@ -113,13 +117,13 @@ vk::raii::PhysicalDevice choosePhysicalDevice(const vk::raii::Instance& instance
     if (!best || typeRank(props.deviceType) < typeRank(devices[*best].getProperties().deviceType)) best = i;
   }
   if (!wanted.empty()) {
-    throw std::runtime_error("no usable Vulkan 1.3 device matches '" + wanted + "' (devices: " +
-                             (names.empty() ? "none" : names) + ")");
+    throw std::runtime_error("no usable Vulkan 1.3 device matches '" + wanted +
+                             "' (devices: " + (names.empty() ? "none" : names) + ")");
   }
   if (!best) {
-    throw std::runtime_error("no Vulkan 1.3 device with a graphics+compute queue (devices: " +
-                             (names.empty() ? "none" : names) +
-                             "); on a machine without a GPU install mesa-vulkan-drivers for lavapipe");
+    throw std::runtime_error(
+        "no Vulkan 1.3 device with a graphics+compute queue (devices: " + (names.empty() ? "none" : names) +
+        "); on a machine without a GPU install mesa-vulkan-drivers for lavapipe");
   }
   return std::move(devices[*best]);
 }
@@ -165,9 +169,9 @@ vk::raii::Device createDevice(const vk::raii::PhysicalDevice& physical, uint32_t
 Context::Context(const ContextOptions& options)
     : log_(std::make_unique<ValidationLog>()),
       instance_(createInstance(context_, options, log_.get())),
-      messenger_(options.validation
-                     ? std::optional<vk::raii::DebugUtilsMessengerEXT>(std::in_place, instance_, messengerInfo(log_.get()))
-                     : std::nullopt),
+      messenger_(options.validation ? std::optional<vk::raii::DebugUtilsMessengerEXT>(std::in_place, instance_,
+                                                                                      messengerInfo(log_.get()))
+                                    : std::nullopt),
       physical_(choosePhysicalDevice(instance_, options.deviceName)),
       properties_(physical_.getProperties()),
       memoryProperties_(physical_.getMemoryProperties()),

@@ -48,9 +48,9 @@ DescriptorArena::DescriptorArena(const Context& ctx, uint32_t maxSets) : ctx_(ct
       {vk::DescriptorType::eStorageImage, 4 * maxSets},
       {vk::DescriptorType::eCombinedImageSampler, 4 * maxSets},
   }};
-  pool_ = vk::raii::DescriptorPool(ctx.device(), vk::DescriptorPoolCreateInfo{.maxSets = maxSets,
-                                                                              .poolSizeCount = uint32_t(sizes.size()),
-                                                                              .pPoolSizes = sizes.data()});
+  pool_ = vk::raii::DescriptorPool(
+      ctx.device(), vk::DescriptorPoolCreateInfo{
+                        .maxSets = maxSets, .poolSizeCount = uint32_t(sizes.size()), .pPoolSizes = sizes.data()});
 }
 
 vk::DescriptorSet DescriptorArena::allocate(vk::DescriptorSetLayout layout) {
@@ -76,7 +76,8 @@ vk::DescriptorSet DescriptorWrites::allocate(const Pipeline& pipeline, Descripto
       }
       written = true;
     }
-    if (!written) throw std::runtime_error(pipeline.name + ": binding " + std::to_string(b.binding) + " is not written");
+    if (!written)
+      throw std::runtime_error(pipeline.name + ": binding " + std::to_string(b.binding) + " is not written");
   }
   vk::DescriptorSet set = arena.allocate(*pipeline.setLayout);
   for (auto& w : writes_) w.dstSet = set;

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <optional>
 
-#include "io/text_file.hpp"
+#include "base/text_file.hpp"
 
 namespace tp::gpu {
 namespace {
@@ -35,7 +35,7 @@ class Includer : public glslang::TShader::Includer {
 
  private:
   IncludeResult* tryFrom(const fs::path& path) {
-    std::optional<std::string> text = io::readTextFile(path);
+    std::optional<std::string> text = base::readTextFile(path);
     if (!text) return nullptr;
     auto* owned = new std::string(std::move(*text));
     return new IncludeResult(path.string(), owned->data(), owned->size(), owned);
@@ -58,7 +58,7 @@ GlslCompile compileGlsl(const fs::path& source, const fs::path& includeDir, cons
   std::call_once(initialised, [] { glslang::InitializeProcess(); });
   const std::optional<EShLanguage> stage = stageOf(source);
   if (!stage) return {{}, source.string() + ": not a .comp, .vert or .frag shader"};
-  const std::optional<std::string> text = io::readTextFile(source);
+  const std::optional<std::string> text = base::readTextFile(source);
   if (!text) return {{}, "cannot read " + source.string()};
 
   glslang::TShader shader(*stage);

@@ -17,8 +17,8 @@ std::optional<uint32_t> findMemoryType(const vk::PhysicalDeviceMemoryProperties&
 }
 
 bool isFormatDepth(vk::Format format) {
-  return format == vk::Format::eD32Sfloat || format == vk::Format::eD16Unorm ||
-         format == vk::Format::eD24UnormS8Uint || format == vk::Format::eD32SfloatS8Uint;
+  return format == vk::Format::eD32Sfloat || format == vk::Format::eD16Unorm || format == vk::Format::eD24UnormS8Uint ||
+         format == vk::Format::eD32SfloatS8Uint;
 }
 
 }  // namespace
@@ -46,8 +46,8 @@ vk::raii::DeviceMemory allocateMemory(const Context& ctx, const vk::MemoryRequir
     if (injectedFault() == Fault::OutOfDeviceMemory && requirements.size >= kInjectedOutOfMemoryBytes) {
       throw vk::OutOfDeviceMemoryError("vkAllocateMemory (TIDEPOOL_INJECT_FAULT)");
     }
-    return vk::raii::DeviceMemory(ctx.device(),
-                                  vk::MemoryAllocateInfo{.allocationSize = requirements.size, .memoryTypeIndex = *type});
+    return vk::raii::DeviceMemory(
+        ctx.device(), vk::MemoryAllocateInfo{.allocationSize = requirements.size, .memoryTypeIndex = *type});
   } catch (const vk::OutOfDeviceMemoryError&) {
     throw std::runtime_error("out of device memory (VK_ERROR_OUT_OF_DEVICE_MEMORY) allocating " +
                              std::to_string(requirements.size) + " bytes for " + what + " on " + ctx.deviceName() +
@@ -62,12 +62,13 @@ Buffer createBuffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlag
                     const std::string& what) {
   if (size == 0) throw std::runtime_error(what + ": a buffer cannot be empty");
   if ((usage & vk::BufferUsageFlagBits::eStorageBuffer) && size > ctx.limits().maxStorageBufferRange) {
-    throw std::runtime_error(what + " needs " + std::to_string(size) + " bytes, over the device's storage buffer limit of " +
+    throw std::runtime_error(what + " needs " + std::to_string(size) +
+                             " bytes, over the device's storage buffer limit of " +
                              std::to_string(ctx.limits().maxStorageBufferRange) + " bytes");
   }
   if (injectedFault() == Fault::Leak) {
-    (void)(*ctx.device()).createBuffer(vk::BufferCreateInfo{.size = 16, .usage = usage}, nullptr,
-                                       *ctx.device().getDispatcher());
+    (void)(*ctx.device())
+        .createBuffer(vk::BufferCreateInfo{.size = 16, .usage = usage}, nullptr, *ctx.device().getDispatcher());
   }
   Buffer b;
   b.size = size;

@@ -27,7 +27,8 @@ void mergeBindings(std::vector<PipelineBinding>& into, const ShaderReflection& r
     bool merged = false;
     for (auto& existing : into) {
       if (existing.binding != b.binding) continue;
-      if (existing.type != b.type) throw std::runtime_error(name + ": binding " + std::to_string(b.binding) + " has two types");
+      if (existing.type != b.type)
+        throw std::runtime_error(name + ": binding " + std::to_string(b.binding) + " has two types");
       existing.stages |= r.stage;
       merged = true;
     }
@@ -41,8 +42,8 @@ void createLayout(const Context& ctx, Pipeline& p) {
     bindings.push_back({.binding = b.binding, .descriptorType = b.type, .descriptorCount = 1, .stageFlags = b.stages});
   }
   p.setLayout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = uint32_t(bindings.size()),
-                                                      .pBindings = bindings.data()});
+      ctx.device(),
+      vk::DescriptorSetLayoutCreateInfo{.bindingCount = uint32_t(bindings.size()), .pBindings = bindings.data()});
   vk::PushConstantRange range{.stageFlags = p.pushStages, .offset = 0, .size = p.pushSize};
   vk::DescriptorSetLayout setLayout = *p.setLayout;
   p.layout = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo{
@@ -59,7 +60,8 @@ void checkPush(const Context& ctx, const Pipeline& p, bool shaderHasPush) {
                              " push constants but C++ declares " + std::to_string(p.pushSize) + " bytes");
   }
   if (p.pushSize > ctx.limits().maxPushConstantsSize) {
-    throw std::runtime_error(p.name + ": " + std::to_string(p.pushSize) + " bytes of push constants, the device allows " +
+    throw std::runtime_error(p.name + ": " + std::to_string(p.pushSize) +
+                             " bytes of push constants, the device allows " +
                              std::to_string(ctx.limits().maxPushConstantsSize));
   }
 }
@@ -69,7 +71,8 @@ void checkPush(const Context& ctx, const Pipeline& p, bool shaderHasPush) {
 Pipeline createComputePipeline(const Context& ctx, const std::string& shader, uint32_t pushSize,
                                const Specialization& specialization) {
   LoadedShader s = loadShader(ctx, shader);
-  if (s.reflection.stage != vk::ShaderStageFlagBits::eCompute) throw std::runtime_error(shader + " is not a compute shader");
+  if (s.reflection.stage != vk::ShaderStageFlagBits::eCompute)
+    throw std::runtime_error(shader + " is not a compute shader");
   Pipeline p;
   p.name = shader;
   p.bindPoint = vk::PipelineBindPoint::eCompute;
@@ -114,23 +117,27 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
   const bool strip = desc.topology == vk::PrimitiveTopology::eTriangleStrip;
   vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = desc.topology, .primitiveRestartEnable = strip};
   vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
-  vk::PipelineRasterizationStateCreateInfo raster{
-      .polygonMode = vk::PolygonMode::eFill, .cullMode = desc.cullMode, .frontFace = vk::FrontFace::eCounterClockwise, .lineWidth = 1.0f};
+  vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
+                                                  .cullMode = desc.cullMode,
+                                                  .frontFace = vk::FrontFace::eCounterClockwise,
+                                                  .lineWidth = 1.0f};
   vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
-  vk::PipelineDepthStencilStateCreateInfo depth{
-      .depthTestEnable = desc.depthTest, .depthWriteEnable = desc.depthWrite, .depthCompareOp = vk::CompareOp::eLessOrEqual};
+  vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = desc.depthTest,
+                                                .depthWriteEnable = desc.depthWrite,
+                                                .depthCompareOp = vk::CompareOp::eLessOrEqual};
   std::vector<vk::PipelineColorBlendAttachmentState> blends(
-      desc.colorFormats.size(),
-      vk::PipelineColorBlendAttachmentState{.blendEnable = desc.additive ? VK_TRUE : VK_FALSE,
-                                            .srcColorBlendFactor = vk::BlendFactor::eOne,
-                                            .dstColorBlendFactor = vk::BlendFactor::eOne,
-                                            .colorBlendOp = vk::BlendOp::eAdd,
-                                            .srcAlphaBlendFactor = vk::BlendFactor::eOne,
-                                            .dstAlphaBlendFactor = vk::BlendFactor::eOne,
-                                            .alphaBlendOp = vk::BlendOp::eAdd,
-                                            .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-                                                              vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA});
-  vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = uint32_t(blends.size()), .pAttachments = blends.data()};
+      desc.colorFormats.size(), vk::PipelineColorBlendAttachmentState{
+                                    .blendEnable = desc.additive ? VK_TRUE : VK_FALSE,
+                                    .srcColorBlendFactor = vk::BlendFactor::eOne,
+                                    .dstColorBlendFactor = vk::BlendFactor::eOne,
+                                    .colorBlendOp = vk::BlendOp::eAdd,
+                                    .srcAlphaBlendFactor = vk::BlendFactor::eOne,
+                                    .dstAlphaBlendFactor = vk::BlendFactor::eOne,
+                                    .alphaBlendOp = vk::BlendOp::eAdd,
+                                    .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                                                      vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA});
+  vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = uint32_t(blends.size()),
+                                              .pAttachments = blends.data()};
   vk::DynamicState dynamicStates[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamicStates};
 

@@ -91,6 +91,7 @@ void bindPipeline(const vk::raii::CommandBuffer& cmd, const Pipeline& p, const P
 }
 
 // Dispatches enough groups to cover (x, y, z) invocations; shaders guard the edge.
-void dispatchCovering(const vk::raii::CommandBuffer& cmd, const Pipeline& p, uint32_t x, uint32_t y = 1, uint32_t z = 1);
+void dispatchCovering(const vk::raii::CommandBuffer& cmd, const Pipeline& p, uint32_t x, uint32_t y = 1,
+                      uint32_t z = 1);
 
 }  // namespace tp::gpu

@@ -54,10 +54,14 @@ struct Id {
 
 vk::ShaderStageFlagBits stageOf(uint32_t executionModel) {
   switch (executionModel) {
-    case 0: return vk::ShaderStageFlagBits::eVertex;
-    case 4: return vk::ShaderStageFlagBits::eFragment;
-    case 5: return vk::ShaderStageFlagBits::eCompute;
-    default: throw std::runtime_error("SPIR-V entry point of unsupported execution model " + std::to_string(executionModel));
+    case 0:
+      return vk::ShaderStageFlagBits::eVertex;
+    case 4:
+      return vk::ShaderStageFlagBits::eFragment;
+    case 5:
+      return vk::ShaderStageFlagBits::eCompute;
+    default:
+      throw std::runtime_error("SPIR-V entry point of unsupported execution model " + std::to_string(executionModel));
   }
 }
 
@@ -71,14 +75,18 @@ vk::DescriptorType descriptorType(const std::vector<Id>& ids, const Id& variable
       if (variable.storageClass == StorageBuffer || t.bufferBlock) return vk::DescriptorType::eStorageBuffer;
       if (variable.storageClass == Uniform && t.block) return vk::DescriptorType::eUniformBuffer;
       break;
-    case OpTypeSampledImage: return vk::DescriptorType::eCombinedImageSampler;
-    case OpTypeSampler: return vk::DescriptorType::eSampler;
+    case OpTypeSampledImage:
+      return vk::DescriptorType::eCombinedImageSampler;
+    case OpTypeSampler:
+      return vk::DescriptorType::eSampler;
     case OpTypeImage:
       if (t.imageDim == kDimBuffer) break;
       return t.imageSampled == 2 ? vk::DescriptorType::eStorageImage : vk::DescriptorType::eSampledImage;
-    default: break;
+    default:
+      break;
   }
-  throw std::runtime_error("SPIR-V binding " + std::to_string(variable.binding) + " has a descriptor kind tidepool does not bind");
+  throw std::runtime_error("SPIR-V binding " + std::to_string(variable.binding) +
+                           " has a descriptor kind tidepool does not bind");
 }
 
 }  // namespace
@@ -110,7 +118,8 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
         if (w[2] == kExecutionModeLocalSize && count >= 6) out.localSize = {w[3], w[4], w[5]};
         break;
       case OpExecutionModeId:
-        if (w[2] == kExecutionModeLocalSizeId && count >= 6) localSizeIds = {checkId(w[3]), checkId(w[4]), checkId(w[5])};
+        if (w[2] == kExecutionModeLocalSizeId && count >= 6)
+          localSizeIds = {checkId(w[3]), checkId(w[4]), checkId(w[5])};
         break;
       case OpConstant:
       case OpSpecConstant:
@@ -157,7 +166,8 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
         id.storageClass = w[3];
         break;
       }
-      default: break;
+      default:
+        break;
     }
     at += count;
   }
@@ -174,7 +184,9 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
     }
     if (id.storageClass != UniformConstant && id.storageClass != Uniform && id.storageClass != StorageBuffer) continue;
     if (id.binding == ~0u) continue;
-    if (id.set != 0) throw std::runtime_error("SPIR-V binding in descriptor set " + std::to_string(id.set) + "; tidepool uses set 0 only");
+    if (id.set != 0)
+      throw std::runtime_error("SPIR-V binding in descriptor set " + std::to_string(id.set) +
+                               "; tidepool uses set 0 only");
     out.bindings.push_back({id.binding, descriptorType(ids, id)});
   }
   std::sort(out.bindings.begin(), out.bindings.end(),

@@ -6,19 +6,24 @@
 namespace tp::gpu {
 
 void uploadToBuffer(const Context& ctx, const Buffer& buffer, const void* data, size_t bytes) {
-  if (bytes > buffer.size) throw std::runtime_error("upload of " + std::to_string(bytes) + " bytes into a buffer of " + std::to_string(buffer.size));
+  if (bytes > buffer.size)
+    throw std::runtime_error("upload of " + std::to_string(bytes) + " bytes into a buffer of " +
+                             std::to_string(buffer.size));
   if (buffer.mapped) {
     std::memcpy(buffer.mapped, data, bytes);
     return;  // host-coherent; the queue submission that follows makes host writes visible
   }
   Buffer staging = createBuffer(ctx, bytes, vk::BufferUsageFlagBits::eTransferSrc, MemoryUse::Upload, "upload staging");
   std::memcpy(staging.mapped, data, bytes);
-  submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-    cmd.copyBuffer(staging.handle(), buffer.handle(), vk::BufferCopy{0, 0, bytes});
-    // Later submissions come later in submission order, so this covers them.
-    auto after = bufferBarrier(buffer.handle(), access::transferWrite, access::anyAccess);
-    pipelineBarrier(cmd, std::span(&after, 1));
-  }, "buffer upload");
+  submitAndWait(
+      ctx,
+      [&](const vk::raii::CommandBuffer& cmd) {
+        cmd.copyBuffer(staging.handle(), buffer.handle(), vk::BufferCopy{0, 0, bytes});
+        // Later submissions come later in submission order, so this covers them.
+        auto after = bufferBarrier(buffer.handle(), access::transferWrite, access::anyAccess);
+        pipelineBarrier(cmd, std::span(&after, 1));
+      },
+      "buffer upload");
 }
 
 Buffer createFilledBuffer(const Context& ctx, const void* data, size_t bytes, vk::BufferUsageFlags usage, MemoryUse use,
@@ -29,14 +34,18 @@ Buffer createFilledBuffer(const Context& ctx, const void* data, size_t bytes, vk
 }
 
 std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Access src) {
-  Buffer readback = createBuffer(ctx, buffer.size, vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback, "readback");
-  submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-    auto before = bufferBarrier(buffer.handle(), src, access::transferRead);
-    pipelineBarrier(cmd, std::span(&before, 1));
-    cmd.copyBuffer(buffer.handle(), readback.handle(), vk::BufferCopy{0, 0, buffer.size});
-    auto after = bufferBarrier(readback.handle(), access::transferWrite, access::hostRead);
-    pipelineBarrier(cmd, std::span(&after, 1));
-  }, "buffer readback");
+  Buffer readback =
+      createBuffer(ctx, buffer.size, vk::BufferUsageFlagBits::eTransferDst, MemoryUse::Readback, "readback");
+  submitAndWait(
+      ctx,
+      [&](const vk::raii::CommandBuffer& cmd) {
+        auto before = bufferBarrier(buffer.handle(), src, access::transferRead);
+        pipelineBarrier(cmd, std::span(&before, 1));
+        cmd.copyBuffer(buffer.handle(), readback.handle(), vk::BufferCopy{0, 0, buffer.size});
+        auto after = bufferBarrier(readback.handle(), access::transferWrite, access::hostRead);
+        pipelineBarrier(cmd, std::span(&after, 1));
+      },
+      "buffer readback");
   std::vector<std::byte> out(buffer.size);
   std::memcpy(out.data(), readback.mapped, buffer.size);
   return out;

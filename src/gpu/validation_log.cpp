@@ -4,8 +4,7 @@
 
 namespace tp::gpu {
 
-void ValidationLog::record(vk::DebugUtilsMessageSeverityFlagBitsEXT severity, const char* idName,
-                           const char* message) {
+void ValidationLog::record(vk::DebugUtilsMessageSeverityFlagBitsEXT severity, const char* idName, const char* message) {
   std::string text = std::string(idName ? idName : "") + ": " + (message ? message : "");
   std::lock_guard lock(mutex_);
   if (severity == vk::DebugUtilsMessageSeverityFlagBitsEXT::eError) {
@@ -48,11 +47,9 @@ void ValidationLog::clear() {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL validationCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                   VkDebugUtilsMessageTypeFlagsEXT /*types*/,
-                                                  const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                  void* userData) {
+                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
   auto* log = static_cast<ValidationLog*>(userData);
-  log->record(static_cast<vk::DebugUtilsMessageSeverityFlagBitsEXT>(severity), data->pMessageIdName,
-              data->pMessage);
+  log->record(static_cast<vk::DebugUtilsMessageSeverityFlagBitsEXT>(severity), data->pMessageIdName, data->pMessage);
   return VK_FALSE;
 }
 

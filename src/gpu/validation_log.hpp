@@ -32,7 +32,6 @@ class ValidationLog {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL validationCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                   VkDebugUtilsMessageTypeFlagsEXT types,
-                                                  const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                  void* userData);
+                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData);
 
 }  // namespace tp::gpu

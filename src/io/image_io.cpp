@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 
 namespace tp::io {
 namespace {
@@ -25,7 +25,7 @@ std::string oneLine(std::string s) {
 }
 
 void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType, const void* data) {
-  AtomicFile file(path);
+  base::AtomicFile file(path);
   auto out = OIIO::ImageOutput::create(file.tempPath());
   if (!out) throw std::runtime_error("cannot write " + path + ": " + oneLine(oiioError("no writer for this format")));
   if (!out->open(file.tempPath(), spec) || !out->write_image(dataType, data) || !out->close()) {
@@ -40,7 +40,7 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
 
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
               const ExrAttributes& attributes) {
-  requireExtension(path, ".exr");
+  base::requireExtension(path, ".exr");
   const size_t channels = image.channels.size();
   if (image.pixels.size() != size_t(image.width) * image.height * channels || channelTypes.size() != channels) {
     throw std::logic_error("writeExr: pixel or channel-type count does not match");
@@ -87,8 +87,9 @@ FloatImage readImage(const std::string& path) {
 }
 
 void writePng(const std::string& path, uint32_t width, uint32_t height, const std::vector<std::uint8_t>& rgba) {
-  requireExtension(path, ".png");
-  if (rgba.size() != size_t(width) * height * 4) throw std::logic_error("writePng: pixel count does not match the size");
+  base::requireExtension(path, ".png");
+  if (rgba.size() != size_t(width) * height * 4)
+    throw std::logic_error("writePng: pixel count does not match the size");
   OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
   writeWithOiio(path, spec, OIIO::TypeDesc::UINT8, rgba.data());

@@ -5,7 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 
 namespace tp::io {
 namespace {
@@ -59,16 +59,17 @@ bool isObj(const std::string& path) {
 
 void checkMeshOutput(const std::string& path) {
   isObj(path);
-  checkWritable(path);
+  base::checkWritable(path);
 }
 
 void writeMeshes(const std::string& path, const std::vector<scene::Mesh>& meshes) {
   const bool obj = isObj(path);
-  AtomicFile file(path);
+  base::AtomicFile file(path);
   std::unique_ptr<std::FILE, FileCloser> f(std::fopen(file.tempPath().c_str(), "w"));
   if (!f) throw std::runtime_error("cannot write " + path);
   obj ? writeObj(f.get(), meshes) : writePly(f.get(), meshes);
-  if (std::fflush(f.get()) != 0 || std::ferror(f.get())) throw std::runtime_error("cannot write " + path + ": disk full?");
+  if (std::fflush(f.get()) != 0 || std::ferror(f.get()))
+    throw std::runtime_error("cannot write " + path + ": disk full?");
   f.reset();
   file.commit();
 }

@@ -15,9 +15,11 @@ constexpr auto kStorage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUs
 void computeToCompute(const vk::raii::CommandBuffer& cmd, std::initializer_list<vk::Buffer> written) {
   std::vector<vk::BufferMemoryBarrier2> barriers;
   for (vk::Buffer b : written) {
-    barriers.push_back(gpu::bufferBarrier(b, {vk::PipelineStageFlagBits2::eComputeShader,
-                                              vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite},
-                                          gpu::access::computeRead));
+    barriers.push_back(
+        gpu::bufferBarrier(b,
+                           {vk::PipelineStageFlagBits2::eComputeShader,
+                            vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite},
+                           gpu::access::computeRead));
   }
   gpu::pipelineBarrier(cmd, barriers);
 }
@@ -27,13 +29,13 @@ void computeToCompute(const vk::raii::CommandBuffer& cmd, std::initializer_list<
 void beforeRewrite(const vk::raii::CommandBuffer& cmd, std::initializer_list<vk::Buffer> written) {
   std::vector<vk::BufferMemoryBarrier2> barriers;
   for (vk::Buffer b : written) {
-    barriers.push_back(gpu::bufferBarrier(
-        b,
-        {vk::PipelineStageFlagBits2::eComputeShader | vk::PipelineStageFlagBits2::eCopy,
-         vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite |
-             vk::AccessFlagBits2::eTransferRead},
-        {vk::PipelineStageFlagBits2::eComputeShader,
-         vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite}));
+    barriers.push_back(
+        gpu::bufferBarrier(b,
+                           {vk::PipelineStageFlagBits2::eComputeShader | vk::PipelineStageFlagBits2::eCopy,
+                            vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite |
+                                vk::AccessFlagBits2::eTransferRead},
+                           {vk::PipelineStageFlagBits2::eComputeShader,
+                            vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite}));
   }
   gpu::pipelineBarrier(cmd, barriers);
 }
@@ -41,7 +43,10 @@ void beforeRewrite(const vk::raii::CommandBuffer& cmd, std::initializer_list<vk:
 }  // namespace
 
 EnvPrefilter::EnvPrefilter(const gpu::Context& ctx, uint32_t width, uint32_t height, uint32_t maxSamples)
-    : ctx_(ctx), width_(width), height_(height), maxSamples_(maxSamples),
+    : ctx_(ctx),
+      width_(width),
+      height_(height),
+      maxSamples_(maxSamples),
       rows_(gpu::createComputePipeline(ctx, "env_rows.comp", sizeof(shader::EnvParams))),
       marginalPass_(gpu::createComputePipeline(ctx, "env_marginal.comp", sizeof(shader::EnvParams))),
       shPass_(gpu::createComputePipeline(ctx, "env_sh.comp", sizeof(shader::EnvParams))),
@@ -51,13 +56,14 @@ EnvPrefilter::EnvPrefilter(const gpu::Context& ctx, uint32_t width, uint32_t hei
                                     "environment row weights")),
       marginal_(gpu::createBuffer(ctx, vk::DeviceSize(height + 2) * 4, kStorage, gpu::MemoryUse::Device,
                                   "environment marginal CDF")),
-      partials_(gpu::createBuffer(ctx,
-                                  vk::DeviceSize((maxSamples + shPass_.localSize[0] - 1) / shPass_.localSize[0]) * 9 * 16,
-                                  kStorage, gpu::MemoryUse::Device, "environment SH partials")),
+      partials_(gpu::createBuffer(
+          ctx, vk::DeviceSize((maxSamples + shPass_.localSize[0] - 1) / shPass_.localSize[0]) * 9 * 16, kStorage,
+          gpu::MemoryUse::Device, "environment SH partials")),
       descriptors_(ctx) {}
 
 void EnvPrefilter::recordCdf(const vk::raii::CommandBuffer& cmd, const gpu::Image& environment, vk::Sampler sampler) {
-  if (environment.extent != vk::Extent2D{width_, height_}) throw std::invalid_argument("environment size differs from the prefilter's");
+  if (environment.extent != vk::Extent2D{width_, height_})
+    throw std::invalid_argument("environment size differs from the prefilter's");
   const shader::EnvParams params{glm::uvec4(width_, height_, 0, 0), glm::vec4(0.0f)};
   beforeRewrite(cmd, {conditional_.handle(), rowWeights_.handle(), marginal_.handle()});
   gpu::bindPipeline(cmd, rows_, params);
@@ -69,7 +75,10 @@ void EnvPrefilter::recordCdf(const vk::raii::CommandBuffer& cmd, const gpu::Imag
   gpu::dispatchCovering(cmd, rows_, height_);
   computeToCompute(cmd, {rowWeights_.handle()});
   gpu::bindPipeline(cmd, marginalPass_, params);
-  gpu::DescriptorWrites().storageBuffer(0, rowWeights_).storageBuffer(1, marginal_).bind(cmd, marginalPass_, descriptors_);
+  gpu::DescriptorWrites()
+      .storageBuffer(0, rowWeights_)
+      .storageBuffer(1, marginal_)
+      .bind(cmd, marginalPass_, descriptors_);
   gpu::dispatchCovering(cmd, marginalPass_, 1);
   computeToCompute(cmd, {conditional_.handle(), marginal_.handle()});
 }
@@ -80,7 +89,8 @@ void EnvPrefilter::recordSh(const vk::raii::CommandBuffer& cmd, const gpu::Image
     throw std::invalid_argument("environment SH samples must be 1 to " + std::to_string(maxSamples_));
   }
   samples_ = samples;
-  const shader::EnvParams params{glm::uvec4(width_, height_, samples, uniform ? 1u : 0u), glm::vec4(rotation, 0.0f, 0.0f)};
+  const shader::EnvParams params{glm::uvec4(width_, height_, samples, uniform ? 1u : 0u),
+                                 glm::vec4(rotation, 0.0f, 0.0f)};
   beforeRewrite(cmd, {partials_.handle()});
   gpu::bindPipeline(cmd, shPass_, params);
   gpu::DescriptorWrites()
@@ -108,6 +118,8 @@ std::vector<float> EnvPrefilter::conditional() const {
   return gpu::readBufferAs<float>(ctx_, conditional_, gpu::access::computeWrite);
 }
 
-std::vector<float> EnvPrefilter::marginal() const { return gpu::readBufferAs<float>(ctx_, marginal_, gpu::access::computeWrite); }
+std::vector<float> EnvPrefilter::marginal() const {
+  return gpu::readBufferAs<float>(ctx_, marginal_, gpu::access::computeWrite);
+}
 
 }  // namespace tp::render

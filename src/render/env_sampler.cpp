@@ -30,7 +30,10 @@ glm::uvec2 equirectTexel(glm::vec3 d, uint32_t width, uint32_t height) {
 }
 
 EnvSampler::EnvSampler(const SkyImage& image)
-    : width_(image.width), height_(image.height), luminance_(image.texels.size()), rowCdf_(height_ + 1, 0.0),
+    : width_(image.width),
+      height_(image.height),
+      luminance_(image.texels.size()),
+      rowCdf_(height_ + 1, 0.0),
       columnCdf_(size_t(height_) * (width_ + 1), 0.0) {
   // Sums in double: the CDFs of a 2048 x 1024 map are then exact to float.
   for (uint32_t j = 0; j < height_; ++j) {

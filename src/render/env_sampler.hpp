@@ -40,8 +40,8 @@ class EnvSampler {
 
  private:
   uint32_t width_, height_;
-  std::vector<float> luminance_;  // per texel, rows top to bottom
-  std::vector<double> rowCdf_;    // height + 1 entries, 0 to 1
+  std::vector<float> luminance_;   // per texel, rows top to bottom
+  std::vector<double> rowCdf_;     // height + 1 entries, 0 to 1
   std::vector<double> columnCdf_;  // per row, width + 1 entries, 0 to 1 (all 0 for a row of no weight)
   double integral_ = 0.0;
 };

@@ -44,7 +44,8 @@ shader::Sh9 projectSh9(const SkyImage& image, float maxTheta) {
   std::vector<PhiTerms> columns(w);
   for (uint32_t i = 0; i < w; ++i) {
     // phi = (u - 1/2) 2 pi, as shared/equirect.h.
-    columns[i] = phiIntegral((double(i) / w - 0.5) * glm::two_pi<double>(), (double(i + 1) / w - 0.5) * glm::two_pi<double>());
+    columns[i] =
+        phiIntegral((double(i) / w - 0.5) * glm::two_pi<double>(), (double(i + 1) / w - 0.5) * glm::two_pi<double>());
   }
   glm::dvec3 c[9] = {};
   for (uint32_t j = 0; j < h; ++j) {
@@ -69,7 +70,7 @@ shader::Sh9 projectSh9(const SkyImage& image, float maxTheta) {
     c[5] += double(shader::kSh2) * t.ssc * sn;
     c[6] += double(shader::kSh20) * (3.0 * t.scc - t.s) * one;
     c[7] += double(shader::kSh2) * t.sss * 0.5 * s2;  // cos phi sin phi = sin 2phi / 2
-    c[8] += double(shader::kSh22) * t.sss * c2;        // cos^2 phi - sin^2 phi = cos 2phi
+    c[8] += double(shader::kSh22) * t.sss * c2;       // cos^2 phi - sin^2 phi = cos 2phi
   }
   shader::Sh9 sh{};
   for (int k = 0; k < 9; ++k) sh.c[k] = glm::vec4(glm::vec3(c[k]), 0.0f);
@@ -113,9 +114,8 @@ shader::Sh9 estimateSh9(const SkyImage& image, const EnvSampler& sampler, EnvSam
 glm::vec3 estimateIrradiance(const SkyImage& image, const EnvSampler& sampler, EnvSampling kind, uint32_t n,
                              glm::vec2 rotation, glm::vec3 normal) {
   glm::dvec3 sum(0.0);
-  forEachSample(image, sampler, kind, n, rotation, [&](glm::vec3 d, glm::dvec3 weight) {
-    sum += weight * double(std::max(glm::dot(d, normal), 0.0f));
-  });
+  forEachSample(image, sampler, kind, n, rotation,
+                [&](glm::vec3 d, glm::dvec3 weight) { sum += weight * double(std::max(glm::dot(d, normal), 0.0f)); });
   return glm::vec3(sum / double(n));
 }
 

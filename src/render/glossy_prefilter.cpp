@@ -8,7 +8,8 @@
 #include "gpu/commands.hpp"
 #include "gpu/submit.hpp"
 #include "gpu/timer.hpp"
-#include "render/passes.hpp"
+#include "render/pass_kinds.hpp"
+#include "render/surfaces.hpp"
 #include "shared/glossy.h"
 
 namespace tp::render {
@@ -17,11 +18,10 @@ uint32_t glossyBaseWidth(uint32_t skyWidth) {
   return std::clamp(std::bit_floor(skyWidth), shader::kGlossyMinWidth, shader::kGlossyMaxWidth);
 }
 
-uint32_t glossyLevelCount(uint32_t baseWidth) {
-  return uint32_t(std::bit_width(baseWidth / shader::kGlossyMinWidth));
-}
+uint32_t glossyLevelCount(uint32_t baseWidth) { return uint32_t(std::bit_width(baseWidth / shader::kGlossyMinWidth)); }
 
-GlossyPrefilter::GlossyPrefilter(const gpu::Context& ctx, uint32_t skyWidth, uint32_t skyHeight, GlossySampling sampling)
+GlossyPrefilter::GlossyPrefilter(const gpu::Context& ctx, uint32_t skyWidth, uint32_t skyHeight,
+                                 GlossySampling sampling)
     : ctx_(ctx),
       sampling_(sampling),
       cdf_(ctx, skyWidth, skyHeight, 1),
@@ -29,14 +29,14 @@ GlossyPrefilter::GlossyPrefilter(const gpu::Context& ctx, uint32_t skyWidth, uin
       descriptors_(ctx) {
   if (sampling.environment + sampling.lobe == 0) throw std::invalid_argument("the glossy prefilter needs samples");
   const uint32_t width = glossyBaseWidth(skyWidth);
-  map_ = gpu::createImage2D(ctx, {width, width / 2}, kSkyFormat,
-                            vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled |
-                                vk::ImageUsageFlagBits::eTransferSrc,
-                            "glossy environment", glossyLevelCount(width));
+  map_ = gpu::createImage2D(
+      ctx, {width, width / 2}, kSkyFormat,
+      vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc,
+      "glossy environment", glossyLevelCount(width));
 }
 
-void GlossyPrefilter::record(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& descriptors, const gpu::Image& sky,
-                             vk::Sampler sampler) {
+void GlossyPrefilter::record(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& descriptors,
+                             const gpu::Image& sky, vk::Sampler sampler) {
   cdf_.recordCdf(cmd, sky, sampler);
   const uint32_t base = map_.extent.width;
   for (uint32_t level = 0; level < map_.mipLevels; ++level) {
@@ -55,10 +55,14 @@ void GlossyPrefilter::record(const vk::raii::CommandBuffer& cmd, gpu::Descriptor
   }
 }
 
-void GlossyPrefilter::declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler,
-                              ResourceRef mapRef) {
-  graph.pass("glossy prefilter", {{skyRef, Use::ComputeSample}, {mapRef, Use::ComputeWrite}},
-             [this, &sky, sampler](PassContext& pc) { record(pc.cmd, pc.descriptors, sky, sampler); },
+void GlossyPrefilter::declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map) {
+  // The prefilter binds its own sets, level by level (record()).
+  graph.pass(passes::kGlossyPrefilter,
+             [this, sky, sampler, map](PassBuilder& pass) {
+               const gpu::Image& source = pass.attach(sky, Use::ComputeSample);
+               pass.attach(map, Use::ComputeWrite);
+               return [this, &source, sampler](PassContext& pc) { record(pc.cmd, pc.descriptors, source, sampler); };
+             },
              {.cached = true, .runIf = {}});
 }
 
@@ -66,34 +70,40 @@ std::vector<std::vector<glm::vec4>> GlossyPrefilter::prefilterAndRead(const gpu:
                                                                       double* milliseconds) {
   const uint32_t base = map_.extent.width;
   vk::DeviceSize texels = 0;
-  for (uint32_t level = 0; level < map_.mipLevels; ++level) texels += vk::DeviceSize(base >> level) * ((base / 2) >> level);
+  for (uint32_t level = 0; level < map_.mipLevels; ++level)
+    texels += vk::DeviceSize(base >> level) * ((base / 2) >> level);
   const gpu::Buffer readback = gpu::createBuffer(ctx_, texels * 8, vk::BufferUsageFlagBits::eTransferDst,
                                                  gpu::MemoryUse::Readback, "glossy environment readback");
   gpu::GpuTimer timer(ctx_, 1);
   descriptors_.reset();
-  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) {
-    timer.reset(cmd);
-    const auto toWrite = gpu::imageBarrier(map_.handle(), map_.aspect, gpu::access::none, vk::ImageLayout::eUndefined,
-                                           gpu::access::computeWrite, vk::ImageLayout::eGeneral);
-    gpu::pipelineBarrier(cmd, {}, std::span(&toWrite, 1));
-    const uint32_t scope = timer.begin(cmd, "glossy prefilter");
-    record(cmd, descriptors_, sky, sampler);
-    timer.end(cmd, scope);
-    const auto toCopy = gpu::imageBarrier(map_.handle(), map_.aspect, gpu::access::computeWrite, vk::ImageLayout::eGeneral,
-                                          gpu::access::transferRead, vk::ImageLayout::eTransferSrcOptimal);
-    gpu::pipelineBarrier(cmd, {}, std::span(&toCopy, 1));
-    vk::DeviceSize offset = 0;
-    for (uint32_t level = 0; level < map_.mipLevels; ++level) {
-      const uint32_t w = base >> level, h = (base / 2) >> level;
-      cmd.copyImageToBuffer(map_.handle(), vk::ImageLayout::eTransferSrcOptimal, readback.handle(),
-                            vk::BufferImageCopy{.bufferOffset = offset,
-                                                .imageSubresource = {map_.aspect, level, 0, 1},
-                                                .imageExtent = {w, h, 1}});
-      offset += vk::DeviceSize(w) * h * 8;
-    }
-    const auto toHost = gpu::bufferBarrier(readback.handle(), gpu::access::transferWrite, gpu::access::hostRead);
-    gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
-  }, "glossy prefilter");
+  gpu::submitAndWait(
+      ctx_,
+      [&](const vk::raii::CommandBuffer& cmd) {
+        timer.reset(cmd);
+        const auto toWrite =
+            gpu::imageBarrier(map_.handle(), map_.aspect, gpu::access::none, vk::ImageLayout::eUndefined,
+                              gpu::access::computeWrite, vk::ImageLayout::eGeneral);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toWrite, 1));
+        const uint32_t scope = timer.begin(cmd, "glossy prefilter");
+        record(cmd, descriptors_, sky, sampler);
+        timer.end(cmd, scope);
+        const auto toCopy =
+            gpu::imageBarrier(map_.handle(), map_.aspect, gpu::access::computeWrite, vk::ImageLayout::eGeneral,
+                              gpu::access::transferRead, vk::ImageLayout::eTransferSrcOptimal);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toCopy, 1));
+        vk::DeviceSize offset = 0;
+        for (uint32_t level = 0; level < map_.mipLevels; ++level) {
+          const uint32_t w = base >> level, h = (base / 2) >> level;
+          cmd.copyImageToBuffer(
+              map_.handle(), vk::ImageLayout::eTransferSrcOptimal, readback.handle(),
+              vk::BufferImageCopy{
+                  .bufferOffset = offset, .imageSubresource = {map_.aspect, level, 0, 1}, .imageExtent = {w, h, 1}});
+          offset += vk::DeviceSize(w) * h * 8;
+        }
+        const auto toHost = gpu::bufferBarrier(readback.handle(), gpu::access::transferWrite, gpu::access::hostRead);
+        gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
+      },
+      "glossy prefilter");
   if (milliseconds) *milliseconds = timer.read().front().milliseconds;
   std::vector<std::vector<glm::vec4>> levels;
   const auto* halves = static_cast<const glm::uint64*>(readback.mapped);

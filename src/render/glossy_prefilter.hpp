@@ -6,8 +6,8 @@
 #include "gpu/descriptors.hpp"
 #include "gpu/memory.hpp"
 #include "gpu/pipeline.hpp"
+#include "graph/frame_graph.hpp"
 #include "render/env_prefilter.hpp"
-#include "render/frame_graph.hpp"
 
 namespace tp::render {
 
@@ -42,7 +42,7 @@ class GlossyPrefilter {
               vk::Sampler sampler);
   // The cached pass "glossy prefilter": it reads the sky and writes the map,
   // so it runs on the first frame and again only when the sky changes.
-  void declare(FrameGraph& graph, ResourceRef skyRef, const gpu::Image& sky, vk::Sampler sampler, ResourceRef mapRef);
+  void declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map);
 
   // Outside a frame (tests, bench): prefilters `sky` in a submission of its
   // own and reads every level back (RGBA, rows top to bottom); `milliseconds`

@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "gpu/context.hpp"
-#include "render/frame_graph.hpp"
+#include "graph/frame_graph.hpp"
+#include "render/pass_kinds.hpp"  // what a frame's passes are found by
 #include "scene/scene.hpp"
+#include "sim/water_driver.hpp"
 #include "sim/water_state.hpp"
 
 namespace tp::render {
@@ -19,24 +21,12 @@ struct FrameRequest {
   bool ao = false;    // read back the AO and the G-buffer it came from (needs a scene with AO on)
 };
 
-// What a renderer's next frames depend on besides its scene: the water as it
-// stands after the last frame rendered, and the sleep rule's count. A
-// renderer of the same scene that resumes from it renders the frames after
-// `frame` to the bit, as the one it came from would have (render --frames
-// A-B --checkpoint-every K: a range can start on another machine).
-struct WaterCheckpoint {
-  uint32_t frame = 0;  // the frame the water has reached
-  sim::WaterState state;
-  uint32_t quietFrames = 0;
-  bool asleep = false;
-};
-
 struct RendererOptions {
   bool aovs = false;  // make the targets and the pass for arbitrary output variables
   // Leave out what a frame does not need: the G-buffer without AO, the camera
   // medium with the camera away from the water, passes whose inputs have not
   // changed (sky, caustics, camera medium), the simulation of water that has
-  // come to rest (WaterSleep), objects outside the view. Off, every frame
+  // come to rest (sim::WaterSleep), objects outside the view. Off, every frame
   // records all of it: the frame to compare against.
   bool skipping = true;
 };
@@ -44,10 +34,10 @@ struct RendererOptions {
 struct RenderedFrame {
   uint32_t width = 0;
   uint32_t height = 0;
-  std::vector<float> rgba;        // linear, scene-referred RGBA; rows top to bottom
-  std::vector<std::uint8_t> srgb; // RGBA8 sRGB preview, when requested
-  std::vector<float> normal;      // xyz0 world normal per pixel, when AOVs are requested (0 where nothing is hit)
-  std::vector<float> position;    // xyz world position and w view depth Z (infinite where nothing is hit)
+  std::vector<float> rgba;         // linear, scene-referred RGBA; rows top to bottom
+  std::vector<std::uint8_t> srgb;  // RGBA8 sRGB preview, when requested
+  std::vector<float> normal;       // xyz0 world normal per pixel, when AOVs are requested (0 where nothing is hit)
+  std::vector<float> position;     // xyz world position and w view depth Z (infinite where nothing is hit)
   // With FrameRequest::ao: the AO (frame size, after blur and upsample), the
   // unblurred SSAO at the AO resolution (aoWidth x aoHeight), and the opaque
   // surfaces' G-buffer it was computed from: the depth buffer's values (1 where
@@ -57,7 +47,7 @@ struct RenderedFrame {
   std::vector<RecordedPass> passes;
   gpu::CommandCounts counts;  // the whole frame's: the sum over `passes`
   bool waterAsleep = false;   // the water was drawn as it was, not simulated
-  double waterEnergy = 0.0;   // per unit area, after the last simulated frame (WaterSleep's measure)
+  double waterEnergy = 0.0;   // per unit area, after the last simulated frame (sim::WaterSleep's measure)
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
   glm::mat4 inverseProjection{1.0f};
@@ -73,23 +63,32 @@ struct RenderedFrame {
 // renderer of scene() renders the same frames to the bit, with one exception:
 // a drop made while paused at frame f (frame f rendered again) shows in the
 // live frame f at once, but in the recorded scene from frame f+1.
+class Renderer;
+
+// Names the renderer a new one goes on from (Renderer(GoOnFrom, ...)).
+struct GoOnFrom {
+  const Renderer& previous;
+};
+
 class Renderer {
  public:
   Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
            const RendererOptions& options = {});
   // A renderer of `scene`, a changed scene (refraction, caustics, AO, sky,
   // ground, pool, terrain, objects, exposure, camera, the water's ior and
-  // absorption...), that goes on where `previous` is, its pipelines made from
-  // the code gpu::spirvModule now gives (shader hot reload): the same size
-  // and options, and the water's state, clock, sleep, applied drops and
+  // absorption...), that goes on where `from.previous` is, its pipelines made
+  // from the code gpu::spirvModule now gives (shader hot reload): the same
+  // size and options, and the water's state, clock, sleep, applied drops and
   // pending drops and sphere moves. The next frame draws what a renderer of
-  // `scene` would draw having been where `previous` is. `scene.water` must be
-  // `previous.scene().water` in every field but ior and absorption (which
-  // only shade it); otherwise throws std::invalid_argument: other water
-  // needs a new renderer (the water restarts).
-  Renderer(const Renderer& previous, const scene::Scene& scene);
-  // The same, with the scene as `previous` now has it.
-  explicit Renderer(const Renderer& previous);
+  // `scene` would draw having been where the previous one is. `scene.water`
+  // must be the previous scene's water in every field but ior and absorption
+  // (which only shade it); otherwise throws std::invalid_argument: other
+  // water needs a new renderer (the water restarts).
+  Renderer(GoOnFrom from, const scene::Scene& scene);
+  // The same, with the scene as the previous renderer now has it.
+  explicit Renderer(GoOnFrom from);
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
   // A drop into the water (it wakes sleeping water), applied at the start of
@@ -123,13 +122,13 @@ class Renderer {
   sim::WaterState waterState() const;
   // The checkpoint of the water as it stands. Throws without water, and
   // after setWaterDynamics (a scene file cannot say when the change came).
-  WaterCheckpoint checkpoint() const;
+  sim::WaterCheckpoint checkpoint() const;
   // Puts the water where the checkpoint says, as if this renderer had
   // rendered up to its frame: the drops up to it count as applied, pending
   // drops and moves are dropped. The scene must be the one the checkpoint
   // was taken from (the caller's to check). Throws without water or on a
   // state of another grid size.
-  void resume(const WaterCheckpoint& checkpoint);
+  void resume(const sim::WaterCheckpoint& checkpoint);
 
  private:
   struct Resources;

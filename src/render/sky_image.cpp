@@ -71,26 +71,30 @@ gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const 
   for (size_t k = 0; k < image.texels.size(); ++k) {
     for (int c = 0; c < 4; ++c) halves[4 * k + c] = glm::packHalf1x16(std::min(image.texels[k][c], 65504.0f));
   }
-  gpu::Image texture = gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat,
-                                          vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                                          name);
+  gpu::Image texture =
+      gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat,
+                         vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, name);
   gpu::Buffer staging = gpu::createBuffer(ctx, halves.size() * sizeof(uint16_t), vk::BufferUsageFlagBits::eTransferSrc,
                                           gpu::MemoryUse::Upload, "sky image staging");
   std::memcpy(staging.mapped, halves.data(), halves.size() * sizeof(uint16_t));
-  gpu::submitAndWait(ctx, [&](const vk::raii::CommandBuffer& cmd) {
-    auto toTransfer = gpu::imageBarrier(texture.handle(), texture.aspect, gpu::access::none, vk::ImageLayout::eUndefined,
-                                        gpu::access::transferWrite, vk::ImageLayout::eTransferDstOptimal);
-    gpu::pipelineBarrier(cmd, {}, std::span(&toTransfer, 1));
-    cmd.copyBufferToImage(staging.handle(), texture.handle(), vk::ImageLayout::eTransferDstOptimal,
-                          vk::BufferImageCopy{.imageSubresource = {texture.aspect, 0, 0, 1},
-                                              .imageExtent = {image.width, image.height, 1}});
-    // Later submissions come later in submission order: this covers their reads.
-    auto toShader = gpu::imageBarrier(texture.handle(), texture.aspect, gpu::access::transferWrite,
-                                      vk::ImageLayout::eTransferDstOptimal,
-                                      {vk::PipelineStageFlagBits2::eFragmentShader, vk::AccessFlagBits2::eShaderSampledRead},
-                                      vk::ImageLayout::eShaderReadOnlyOptimal);
-    gpu::pipelineBarrier(cmd, {}, std::span(&toShader, 1));
-  }, "sky image upload");
+  gpu::submitAndWait(
+      ctx,
+      [&](const vk::raii::CommandBuffer& cmd) {
+        auto toTransfer =
+            gpu::imageBarrier(texture.handle(), texture.aspect, gpu::access::none, vk::ImageLayout::eUndefined,
+                              gpu::access::transferWrite, vk::ImageLayout::eTransferDstOptimal);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toTransfer, 1));
+        cmd.copyBufferToImage(staging.handle(), texture.handle(), vk::ImageLayout::eTransferDstOptimal,
+                              vk::BufferImageCopy{.imageSubresource = {texture.aspect, 0, 0, 1},
+                                                  .imageExtent = {image.width, image.height, 1}});
+        // Later submissions come later in submission order: this covers their reads.
+        auto toShader = gpu::imageBarrier(
+            texture.handle(), texture.aspect, gpu::access::transferWrite, vk::ImageLayout::eTransferDstOptimal,
+            {vk::PipelineStageFlagBits2::eFragmentShader, vk::AccessFlagBits2::eShaderSampledRead},
+            vk::ImageLayout::eShaderReadOnlyOptimal);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toShader, 1));
+      },
+      "sky image upload");
   return texture;
 }
 

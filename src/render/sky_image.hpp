@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "gpu/memory.hpp"
-#include "render/sky_model.hpp"
+#include "shading/sky_model.hpp"
 
 namespace tp::render {
 

@@ -135,7 +135,8 @@ void validateScene(const Scene& s) {
   requireRange(s.pool.brickHeight, 1e-3f, 1e2f, "pool.brick_height");
   requireRange(s.pool.mortarFraction, 0.0f, 0.5f, "pool.mortar_fraction");
   if (!(s.pool.mortarFraction * s.pool.brickHeight < s.pool.brickWidth)) {
-    throw std::runtime_error("pool.mortar_fraction times pool.brick_height (the joints' width) must be less than pool.brick_width");
+    throw std::runtime_error(
+        "pool.mortar_fraction times pool.brick_height (the joints' width) must be less than pool.brick_width");
   }
   requireNonNegative(s.pool.brickAlbedo, "pool.brick_albedo");
   requireNonNegative(s.pool.mortarAlbedo, "pool.mortar_albedo");
@@ -150,11 +151,12 @@ void validateScene(const Scene& s) {
   requireRange(float(s.terrain.octaves), 1.0f, 16.0f, "terrain.octaves");
   requireRange(s.terrain.persistence, 0.0f, 1.0f, "terrain.persistence");
   if (w.enabled && w.level >= s.ground.height) {
-    throw std::runtime_error("water.level " + std::to_string(w.level) + " must be below the pool's rim, the ground at " +
-                             std::to_string(s.ground.height));
+    throw std::runtime_error("water.level " + std::to_string(w.level) +
+                             " must be below the pool's rim, the ground at " + std::to_string(s.ground.height));
   }
   if (s.spheres.size() > TP_MAX_SPHERES) {
-    throw std::runtime_error("spheres: at most " + std::to_string(TP_MAX_SPHERES) + ", got " + std::to_string(s.spheres.size()));
+    throw std::runtime_error("spheres: at most " + std::to_string(TP_MAX_SPHERES) + ", got " +
+                             std::to_string(s.spheres.size()));
   }
   for (const Sphere& sphere : s.spheres) {
     requireFinite(sphere.center, "spheres[].center");
@@ -175,7 +177,8 @@ void validateScene(const Scene& s) {
     }
   }
   if (s.boxes.size() > TP_MAX_BOXES) {
-    throw std::runtime_error("boxes: at most " + std::to_string(TP_MAX_BOXES) + ", got " + std::to_string(s.boxes.size()));
+    throw std::runtime_error("boxes: at most " + std::to_string(TP_MAX_BOXES) + ", got " +
+                             std::to_string(s.boxes.size()));
   }
   for (const Box& box : s.boxes) {
     requireFinite(box.center, "boxes[].center");

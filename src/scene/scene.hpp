@@ -27,12 +27,12 @@ inline const std::vector<std::string> kMaterial{"lambert", "glass"};
 // horizon. They hide the sky and its glow, never the sun (which lights the
 // scene regardless).
 struct Clouds {
-  float coverage = 0.0f;          // 0: a clear sky, 1: overcast
-  float scale = 1.5f;             // noise frequency on the cloud plane, per unit of its height
+  float coverage = 0.0f;  // 0: a clear sky, 1: overcast
+  float scale = 1.5f;     // noise frequency on the cloud plane, per unit of its height
   unsigned octaves = 5;
   float persistence = 0.5f;
   unsigned seed = 3;
-  std::string noise = "simplex";  // value | value_cubic | gradient | simplex
+  std::string noise = "simplex";       // value | value_cubic | gradient | simplex
   glm::vec3 color{1.1f, 1.1f, 1.15f};  // radiance of a cloud
   bool operator==(const Clouds&) const = default;
 };
@@ -41,17 +41,17 @@ struct Clouds {
 // turns it into the shader's SkyParams.
 struct Sky {
   float sunElevationDegrees = 35.0f;
-  float sunAzimuthDegrees = 60.0f;   // from +x towards +z
+  float sunAzimuthDegrees = 60.0f;  // from +x towards +z
   float sunAngularRadiusDegrees = 1.0f;
   glm::vec3 sunRadiance{5000.0f, 4700.0f, 4300.0f};
   glm::vec3 zenith{0.10f, 0.25f, 0.75f};
   glm::vec3 horizon{0.55f, 0.65f, 0.8f};
   glm::vec3 ground{0.25f, 0.23f, 0.2f};
   glm::vec3 glow{1.2f, 0.9f, 0.6f};
-  float zenithExponent = 0.5f;     // shape of the horizon-to-zenith blend
-  float glowExponent = 32.0f;      // tightness of the glow around the sun
-  float horizonBlend = 0.02f;      // width of the sky-to-ground blend (sin of elevation)
-  unsigned textureWidth = 2048;    // equirectangular texture; height is half
+  float zenithExponent = 0.5f;   // shape of the horizon-to-zenith blend
+  float glowExponent = 32.0f;    // tightness of the glow around the sun
+  float horizonBlend = 0.02f;    // width of the sky-to-ground blend (sin of elevation)
+  unsigned textureWidth = 2048;  // equirectangular texture; height is half
   // An equirectangular .exr or .hdr to use instead of the procedural sky
   // (absolute, or relative to the scene file); it lights the scene alone.
   std::string image;
@@ -72,7 +72,7 @@ struct Ground {
 // water, with inner walls (plain, or running-bond brick with noise dirt) and a
 // tiled floor shaped by value-noise terrain.
 struct Pool {
-  float depth = 1.2f;  // mean floor depth below the rim (the ground)
+  float depth = 1.2f;                         // mean floor depth below the rim (the ground)
   glm::vec3 wallAlbedo{0.55f, 0.56f, 0.58f};  // of plain walls
   std::string wallPattern = "plain";          // plain | brick
   float brickWidth = 0.24f;                   // metres, joint included (courses repeat every brick width along)
@@ -80,11 +80,11 @@ struct Pool {
   float mortarFraction = 0.15f;               // the joints' width as a fraction of the brick height
   glm::vec3 brickAlbedo{0.55f, 0.24f, 0.16f};
   glm::vec3 mortarAlbedo{0.62f, 0.60f, 0.55f};
-  float dirt = 0.3f;                          // how much noise darkens the bricks (0: clean, 1: black at worst)
+  float dirt = 0.3f;  // how much noise darkens the bricks (0: clean, 1: black at worst)
   float tileSize = 0.25f;
   glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
   glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};
-  float wallSpecular = 0.0f;   // the walls' glossy lobe's share (shared/glossy.h)
+  float wallSpecular = 0.0f;  // the walls' glossy lobe's share (shared/glossy.h)
   float wallRoughness = 0.5f;
   bool operator==(const Pool&) const = default;
 };
@@ -108,16 +108,16 @@ struct Keyframe {
 
 // A sphere; with a path it moves (linearly between keyframes, held before the
 // first and after the last) and pushes the water as it goes. Lambertian, or
-// glass (README, "Glass"): refracting the sky through it, seen directly only.
+// glass (docs/glass.md): refracting the sky through it, seen directly only.
 struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
   glm::vec3 albedo{0.8f, 0.3f, 0.2f};  // of a lambert sphere
-  float specular = 0.0f;   // the glossy lobe's share, 0 (Lambertian) to 1 (shared/glossy.h)
-  float roughness = 0.5f;  // of the glossy lobe, 0 (sharpest) to 1 (a cosine lobe)
+  float specular = 0.0f;               // the glossy lobe's share, 0 (Lambertian) to 1 (shared/glossy.h)
+  float roughness = 0.5f;              // of the glossy lobe, 0 (sharpest) to 1 (a cosine lobe)
   std::vector<Keyframe> path = {};
-  std::string material = "lambert";    // lambert | glass
-  float ior = 1.5f;                    // of a glass sphere, in (1, 3]
+  std::string material = "lambert";  // lambert | glass
+  float ior = 1.5f;                  // of a glass sphere, in (1, 3]
   bool operator==(const Sphere&) const = default;
 };
 
@@ -130,8 +130,8 @@ inline bool isGlass(const Sphere& sphere) { return sphere.material == "glass"; }
 // the simulated water passes through it (it is drawn over the water inside it).
 struct Box {
   glm::vec3 center{0.0f};
-  glm::vec3 size{0.5f};        // edge lengths along its own x, y, z (metres)
-  float yawDegrees = 0.0f;     // about +y, from +x towards -z
+  glm::vec3 size{0.5f};     // edge lengths along its own x, y, z (metres)
+  float yawDegrees = 0.0f;  // about +y, from +x towards -z
   glm::vec3 albedo{0.3f, 0.5f, 0.7f};
   bool operator==(const Box&) const = default;
 };
@@ -157,7 +157,7 @@ struct Water {
   float extent = 4.0f;
   float level = -0.15f;  // rest height of the surface (the rim is the ground's height)
   float waveSpeed = 0.6f;
-  float damping = 0.3f;           // 1/s
+  float damping = 0.3f;  // 1/s
   std::string boundary = "clamp";
   float maxSlope = 0.0f;
   float frameTime = 1.0f / 30.0f;  // seconds of simulation per rendered frame
@@ -187,21 +187,21 @@ struct Render {
 // preset; aoPreset gives each preset.
 struct Ao {
   bool enabled = true;
-  std::string pattern = "hammersley";  // kernel and noise tile: hammersley | random (the LearnOpenGL baseline)
-  unsigned kernelSize = 8;     // hemisphere samples per pixel, 1..64
-  float radius = 0.5f;         // metres
-  float bias = 0.025f;         // metres: depth difference that does not count as occlusion
-  unsigned noiseSize = 4;      // side of the rotation tile in pixels, 1..8
+  std::string pattern = "hammersley";        // kernel and noise tile: hammersley | random (the LearnOpenGL baseline)
+  unsigned kernelSize = 8;                   // hemisphere samples per pixel, 1..64
+  float radius = 0.5f;                       // metres
+  float bias = 0.025f;                       // metres: depth difference that does not count as occlusion
+  unsigned noiseSize = 4;                    // side of the rotation tile in pixels, 1..8
   std::string depthLookup = "interpolated";  // depth at a sample: interpolated | nearest (the original's)
-  std::string blur = "bilateral";  // off | box | bilateral
-  unsigned blurTaps = 4;       // per direction of the separable blur
+  std::string blur = "bilateral";            // off | box | bilateral
+  unsigned blurTaps = 4;                     // per direction of the separable blur
   float blurDepthTolerance = 0.05f;  // bilateral blur and upsample: neighbours within this fraction of the view depth
   std::string resolution = "full";   // full | half (then a depth-aware upsample)
   bool operator==(const Ao&) const = default;
 };
 
 // The AO settings of a preset: fast | balanced | quality, chosen from the
-// measured curve of run time against error (README, "Ambient occlusion"), or
+// measured curve of run time against error (docs/ambient-occlusion.md), or
 // baseline, the LearnOpenGL-style SSAO they are measured against. Throws
 // std::invalid_argument naming the presets on any other name.
 Ao aoPreset(const std::string& name);

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/atomic_file.hpp"
-#include "io/text_file.hpp"
+#include "base/atomic_file.hpp"
+#include "base/text_file.hpp"
 #include "scene/scene_keys.hpp"
 
 namespace tp::scene {
@@ -235,7 +235,8 @@ Scene withSetting(const Scene& scene, const std::string& key, const std::string&
       throw std::runtime_error(key + ": not a key of the scene");
     }
     if (key.empty() || !root.contains(at)) {
-      throw std::runtime_error(key + ": not a key of the scene (keys are a scene file's, joined by dots: "
+      throw std::runtime_error(key +
+                               ": not a key of the scene (keys are a scene file's, joined by dots: "
                                "water.wave_speed, spheres.0.radius)");
     }
     root[at] = setting;
@@ -244,8 +245,8 @@ Scene withSetting(const Scene& scene, const std::string& key, const std::string&
 }
 
 void saveSceneFile(const std::string& path, const Scene& scene) {
-  io::requireExtension(path, ".json");
-  io::AtomicFile file(path);
+  base::requireExtension(path, ".json");
+  base::AtomicFile file(path);
   {
     std::ofstream out(file.tempPath(), std::ios::binary);
     out << sceneToJson(scene);
@@ -257,8 +258,9 @@ void saveSceneFile(const std::string& path, const Scene& scene) {
 
 Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("cannot read scene file " + path + ": not a file");
-  const std::optional<std::string> text = io::readTextFile(path);
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw std::runtime_error("cannot read scene file " + path + ": not a file");
+  const std::optional<std::string> text = base::readTextFile(path);
   if (!text) throw std::runtime_error("cannot read scene file " + path);
   return parseScene(*text, path);
 }

@@ -5,7 +5,7 @@
 
 namespace tp::scene {
 
-// Reads a JSON scene file (format in README.md, example in scenes/). Every
+// Reads a JSON scene file (format in docs/scene-files.md, examples in scenes/). Every
 // field has the default scene's value when absent; unknown keys, wrong types
 // and impossible values throw std::runtime_error naming the file and the key.
 Scene loadSceneFile(const std::string& path);
@@ -23,7 +23,7 @@ std::string sceneToJson(const Scene& scene);
 // when the scene has no such key, or the scene it makes is impossible.
 Scene withSetting(const Scene& scene, const std::string& key, const std::string& value);
 
-// Writes sceneToJson to a .json path, whole or not at all (io::AtomicFile).
+// Writes sceneToJson to a .json path, whole or not at all (base::AtomicFile).
 void saveSceneFile(const std::string& path, const Scene& scene);
 
 }  // namespace tp::scene

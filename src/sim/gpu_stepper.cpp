@@ -13,8 +13,8 @@
 namespace tp::sim {
 namespace {
 
-constexpr uint32_t kTile = 32;  // water_step_tiled.comp's local size
-constexpr uint32_t kGroup = 16; // the 16x16 local size of the other water shaders
+constexpr uint32_t kTile = 32;   // water_step_tiled.comp's local size
+constexpr uint32_t kGroup = 16;  // the 16x16 local size of the other water shaders
 
 shader::WaterStepParams stepParams(const WaterParams& p, double dt, uint32_t steps) {
   const double h = p.h();
@@ -60,10 +60,14 @@ void checkGridFits(const gpu::Context& ctx, uint32_t n) {
                            " (at most " + std::to_string(maxGrid(ctx)) + ")");
 }
 
-GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial,
-                       StepKernel kernel, uint32_t halo)
-    : ctx_(ctx), params_(withGrid(params, initial.n)), kernel_(kernel), halo_(halo),
-      tiles_(ctx, initial.n, params.boundary), descriptors_(ctx, 16) {
+GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const WaterState& initial, StepKernel kernel,
+                       uint32_t halo)
+    : ctx_(ctx),
+      params_(withGrid(params, initial.n)),
+      kernel_(kernel),
+      halo_(halo),
+      tiles_(ctx, initial.n, params.boundary),
+      descriptors_(ctx, 16) {
   if (halo < 1 || halo > kMaxHalo) {
     throw std::runtime_error("tiled water halo " + std::to_string(halo) + " is outside 1.." + std::to_string(kMaxHalo));
   }
@@ -79,26 +83,36 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   const std::string grid = std::to_string(n) + "x" + std::to_string(n) + " water state";
   buffers_[0] = stateBuffer(ctx, n, grid.c_str());
   buffers_[1] = stateBuffer(ctx, n, grid.c_str());
-  partials_ = gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
-                                vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
+  partials_ =
+      gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
+                        vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
   reset(initial);
   for (int k = 0; k < 2; ++k) {
     gpu::DescriptorWrites step;
     step.storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]);
     if (kernel_ == StepKernel::ActiveTiles) {
       // Full-grid runs step with the plain kernel but for their last step (see recordActiveSteps).
-      plainSets_[k] =
-          gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]).allocate(stepOne_, descriptors_);
-      stepSets_[k] = step.storageBuffer(2, tiles_.changedAt()).storageBuffer(3, tiles_.list()).allocate(stepActive_, descriptors_);
+      plainSets_[k] = gpu::DescriptorWrites()
+                          .storageBuffer(0, buffers_[k])
+                          .storageBuffer(1, buffers_[1 - k])
+                          .allocate(stepOne_, descriptors_);
+      stepSets_[k] =
+          step.storageBuffer(2, tiles_.changedAt()).storageBuffer(3, tiles_.list()).allocate(stepActive_, descriptors_);
     } else {
       stepSets_[k] = step.allocate(kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_, descriptors_);
     }
-    dropSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, tiles_.changedAt()).allocate(
-        dropPipeline_, descriptors_);
-    sphereSets_[k] = gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, tiles_.changedAt()).allocate(
-        spherePipeline_, descriptors_);
-    statsSets_[k] =
-        gpu::DescriptorWrites().storageBuffer(0, buffers_[k]).storageBuffer(1, partials_).allocate(statsPipeline_, descriptors_);
+    dropSets_[k] = gpu::DescriptorWrites()
+                       .storageBuffer(0, buffers_[k])
+                       .storageBuffer(1, tiles_.changedAt())
+                       .allocate(dropPipeline_, descriptors_);
+    sphereSets_[k] = gpu::DescriptorWrites()
+                         .storageBuffer(0, buffers_[k])
+                         .storageBuffer(1, tiles_.changedAt())
+                         .allocate(spherePipeline_, descriptors_);
+    statsSets_[k] = gpu::DescriptorWrites()
+                        .storageBuffer(0, buffers_[k])
+                        .storageBuffer(1, partials_)
+                        .allocate(statsPipeline_, descriptors_);
   }
 }
 
@@ -216,10 +230,16 @@ TileCounts GpuStepper::readTilesDispatched() {
 }
 
 void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude) {
-  if (!(radius > 0.0f) || !std::isfinite(amplitude)) throw std::runtime_error("a drop needs a positive radius and a finite amplitude");
+  if (!(radius > 0.0f) || !std::isfinite(amplitude))
+    throw std::runtime_error("a drop needs a positive radius and a finite amplitude");
   beforeCompute(cmd);
-  shader::WaterDropParams p{.n = params_.n, .h = float(params_.h()), .radius = radius, .amplitude = amplitude,
-                            .center = center, .markStep = uint32_t(stepIndex_), .pad = 0};
+  shader::WaterDropParams p{.n = params_.n,
+                            .h = float(params_.h()),
+                            .radius = radius,
+                            .amplitude = amplitude,
+                            .center = center,
+                            .markStep = uint32_t(stepIndex_),
+                            .pad = 0};
   gpu::bindPipeline(cmd, dropPipeline_, p);
   gpu::bindSet(cmd, dropPipeline_, dropSets_[current_]);
   gpu::dispatchCovering(cmd, dropPipeline_, params_.n, params_.n);
@@ -228,8 +248,12 @@ void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center
 void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius,
                                   float restLevel) {
   beforeCompute(cmd);
-  shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius), .newCenter = glm::vec4(to, restLevel),
-                              .n = params_.n, .h = float(params_.h()), .markStep = uint32_t(stepIndex_), .pad = 0};
+  shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius),
+                              .newCenter = glm::vec4(to, restLevel),
+                              .n = params_.n,
+                              .h = float(params_.h()),
+                              .markStep = uint32_t(stepIndex_),
+                              .pad = 0};
   gpu::bindPipeline(cmd, spherePipeline_, p);
   gpu::bindSet(cmd, spherePipeline_, sphereSets_[current_]);
   gpu::dispatchCovering(cmd, spherePipeline_, params_.n, params_.n);
@@ -237,13 +261,14 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
 
 void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, double dt) {
   beforeCompute(cmd);
-  shader::WaterStatsParams p{.n = params_.n,
-                             .boundary = params_.boundary == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
-                             .c2 = float(params_.waveSpeed * params_.waveSpeed),
-                             .h = float(params_.h()),
-                             .dt = float(dt),
-                             .pad0 = 0.0f,
-                             .pad1 = {}};
+  shader::WaterStatsParams p{
+      .n = params_.n,
+      .boundary = params_.boundary == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
+      .c2 = float(params_.waveSpeed * params_.waveSpeed),
+      .h = float(params_.h()),
+      .dt = float(dt),
+      .pad0 = 0.0f,
+      .pad1 = {}};
   gpu::bindPipeline(cmd, statsPipeline_, p);
   gpu::bindSet(cmd, statsPipeline_, statsSets_[current_]);
   gpu::dispatchCovering(cmd, statsPipeline_, params_.n, params_.n);
@@ -276,22 +301,26 @@ void GpuStepper::step(uint64_t steps, double dt) {
                                                                        : kDispatchesPerSubmit;
   for (uint64_t done = 0; done < steps;) {
     const uint64_t k = std::min(stepsPerSubmit, steps - done);
-    gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");
+    gpu::submitAndWait(
+        ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSteps(cmd, k, dt); }, "water simulation");
     done += k;
   }
 }
 
 void GpuStepper::drop(glm::vec2 center, float radius, float amplitude) {
-  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
+  gpu::submitAndWait(
+      ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
 }
 
 void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel) {
-  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
-         "sphere displacement");
+  gpu::submitAndWait(
+      ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
+      "sphere displacement");
 }
 
 WaterStats GpuStepper::stats(double dt) {
-  gpu::submitAndWait(ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordStats(cmd, dt); }, "water statistics");
+  gpu::submitAndWait(
+      ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordStats(cmd, dt); }, "water statistics");
   return readStats();
 }
 

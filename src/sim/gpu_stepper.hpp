@@ -101,7 +101,7 @@ class GpuStepper {
   bool pendingWrite_ = false;  // a compute write that later compute work must wait for
   TileDispatch tileDispatch_ = TileDispatch::Auto;
   bool lastStepsFull_ = true;
-  uint64_t directTiles_ = 0;   // tiles of full-grid active-kernel steps recorded since the last read
+  uint64_t directTiles_ = 0;  // tiles of full-grid active-kernel steps recorded since the last read
 };
 
 }  // namespace tp::sim

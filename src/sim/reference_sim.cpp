@@ -8,8 +8,11 @@
 namespace tp::sim {
 
 ReferenceSim::ReferenceSim(const WaterParams& params, const WaterState& initial)
-    : p_(params), u_(initial.u.begin(), initial.u.end()), v_(initial.v.begin(), initial.v.end()),
-      nextU_(u_.size()), nextV_(v_.size()) {
+    : p_(params),
+      u_(initial.u.begin(), initial.u.end()),
+      v_(initial.v.begin(), initial.v.end()),
+      nextU_(u_.size()),
+      nextV_(v_.size()) {
   p_.n = initial.n;
 }
 
@@ -57,7 +60,8 @@ WaterStats ReferenceSim::stats(double dt) const {
       s.maxAbsV = std::max(s.maxAbsV, std::abs(v));
       s.volume += u * h * h;
       const double dE = u - heightAt(i + 1, j), dN = u - heightAt(i, j + 1);
-      const double laplacian = (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1) - 4.0 * u) / (h * h);
+      const double laplacian =
+          (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1) - 4.0 * u) / (h * h);
       s.energy += (0.5 * v * v + 0.5 * c2 * (dE * dE + dN * dN) / (h * h) + 0.5 * dt * c2 * v * laplacian) * h * h;
     }
   }

@@ -23,7 +23,8 @@ void require(bool ok, const std::string& message) {
 void validate(const WaterParams& p) {
   require(p.n >= 2, "grid size " + std::to_string(p.n) + " is below the minimum of 2");
   require(std::isfinite(p.extent) && p.extent > 0.0, "extent must be positive and finite, got " + fmt(p.extent));
-  require(std::isfinite(p.waveSpeed) && p.waveSpeed > 0.0, "wave speed must be positive and finite, got " + fmt(p.waveSpeed));
+  require(std::isfinite(p.waveSpeed) && p.waveSpeed > 0.0,
+          "wave speed must be positive and finite, got " + fmt(p.waveSpeed));
   require(std::isfinite(p.damping) && p.damping >= 0.0, "damping must be >= 0 and finite, got " + fmt(p.damping));
   require(std::isfinite(p.maxSlope) && p.maxSlope >= 0.0, "max slope must be >= 0 and finite, got " + fmt(p.maxSlope));
 }
@@ -31,16 +32,17 @@ void validate(const WaterParams& p) {
 void checkStable(const WaterParams& p, double dt) {
   require(std::isfinite(dt) && dt > 0.0, "time step must be positive and finite, got " + fmt(dt));
   const double lambda = p.lambda(dt);
-  require(lambda <= kStabilityBound, "lambda = c*dt/h = " + fmt(lambda) + " exceeds the 2D stability bound 1/sqrt(2) = " +
-                                         fmt(kStabilityBound) + " (dt = " + fmt(dt) + " s, h = " + fmt(p.h()) +
-                                         " m, c = " + fmt(p.waveSpeed) + " m/s)");
+  require(lambda <= kStabilityBound,
+          "lambda = c*dt/h = " + fmt(lambda) + " exceeds the 2D stability bound 1/sqrt(2) = " + fmt(kStabilityBound) +
+              " (dt = " + fmt(dt) + " s, h = " + fmt(p.h()) + " m, c = " + fmt(p.waveSpeed) + " m/s)");
 }
 
 uint32_t substepsFor(const WaterParams& p, double frameTime, double safety) {
   require(std::isfinite(frameTime) && frameTime > 0.0, "frame time must be positive and finite, got " + fmt(frameTime));
   require(safety > 0.0 && safety <= 1.0, "substep safety factor must be in (0, 1]");
   const double needed = std::ceil(p.lambda(frameTime) / (safety * kStabilityBound));
-  require(needed <= 1e6, "frame time " + fmt(frameTime) + " s needs " + fmt(needed) + " substeps, over the limit of 1e6");
+  require(needed <= 1e6,
+          "frame time " + fmt(frameTime) + " s needs " + fmt(needed) + " substeps, over the limit of 1e6");
   return std::max<uint32_t>(1, uint32_t(needed));
 }
 

@@ -12,12 +12,12 @@ enum class Scheme { Symplectic, Explicit };
 inline constexpr double kStabilityBound = 0.70710678118654752440;
 
 struct WaterParams {
-  uint32_t n = 256;          // cells per side
-  double extent = 2.0;       // L, metres per side; h = L / n
-  double waveSpeed = 0.5;    // c, m/s
-  double damping = 0.0;      // gamma, 1/s (a rate, so it does not change with dt)
+  uint32_t n = 256;        // cells per side
+  double extent = 2.0;     // L, metres per side; h = L / n
+  double waveSpeed = 0.5;  // c, m/s
+  double damping = 0.0;    // gamma, 1/s (a rate, so it does not change with dt)
   Boundary boundary = Boundary::Clamp;
-  double maxSlope = 0.0;     // > 0: |u - 4-neighbour average| <= maxSlope * h after each step
+  double maxSlope = 0.0;  // > 0: |u - 4-neighbour average| <= maxSlope * h after each step
   Scheme scheme = Scheme::Symplectic;
 
   double h() const { return extent / n; }

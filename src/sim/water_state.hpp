@@ -35,16 +35,4 @@ void startAtRest(WaterState& s, const WaterParams& params, double dt);
 std::vector<shader::WaterCell> toCells(const WaterState& s, double extent);
 WaterState fromCells(std::span<const shader::WaterCell> cells, uint32_t n);
 
-// Builds the initial state from a --init specification: "drop:X,Z,RADIUS,AMP" or
-// "mode:M,N,AMP" (at rest, started with startAtRest for time step dt), or the
-// path of an EXR with channels u and v (N x N float), taken as it is so that a
-// run resumes exactly where another stopped. params.n is the grid size asked
-// for (0: take it from the EXR). Throws a one-line error naming the
-// specification and the problem.
-WaterState initialState(const std::string& spec, const WaterParams& params, double dt);
-
-// The EXR form of a state: float32 channels u and v, pixel (i, j) = cell (i, j).
-void writeStateExr(const std::string& path, const WaterState& s);
-WaterState readStateExr(const std::string& path);
-
 }  // namespace tp::sim

@@ -11,7 +11,7 @@
 namespace tp::sim {
 namespace {
 
-// The dispatch rule, from `tidepool bench tiles` (README, "Active tiles"; 2
+// The dispatch rule, from `tidepool bench tiles` (docs/simulation.md, "Active tiles"; 2
 // cores, lavapipe, grids 256, 512, 1024, each ratio the median over 7 runs
 // interleaved under the same load): the list took 0.01-0.02 of the full
 // grid's time on calm water, 0.09-0.26 with 5-17% of the tiles active,
@@ -23,7 +23,9 @@ namespace {
 // region widens by a ring of tiles per step after it.
 constexpr double kActiveListMaxFraction = 0.7;
 
-shader::WaterTileCounters* countersOf(const gpu::Buffer& b) { return static_cast<shader::WaterTileCounters*>(b.mapped); }
+shader::WaterTileCounters* countersOf(const gpu::Buffer& b) {
+  return static_cast<shader::WaterTileCounters*>(b.mapped);
+}
 
 }  // namespace
 
@@ -35,9 +37,11 @@ WaterTiles::WaterTiles(const gpu::Context& ctx, uint32_t n, Boundary boundary)
     : ctx_(ctx), perSide_((n + TP_WATER_TILE - 1) / TP_WATER_TILE), boundary_(boundary), descriptors_(ctx, 1) {
   const vk::DeviceSize bytes = vk::DeviceSize(count()) * sizeof(uint32_t);
   listPipeline_ = gpu::createComputePipeline(ctx, "water_tile_list.comp", sizeof(shader::WaterTileListParams));
-  changedAt_ = gpu::createBuffer(ctx, bytes, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst,
-                                 gpu::MemoryUse::Device, "water tile change steps");
-  list_ = gpu::createBuffer(ctx, bytes, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device, "active water tiles");
+  changedAt_ =
+      gpu::createBuffer(ctx, bytes, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst,
+                        gpu::MemoryUse::Device, "water tile change steps");
+  list_ = gpu::createBuffer(ctx, bytes, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device,
+                            "active water tiles");
   // Host-visible: the host reads the count to choose the next dispatch.
   counters_ = gpu::createBuffer(ctx, sizeof(shader::WaterTileCounters),
                                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer,
@@ -60,10 +64,11 @@ void WaterTiles::recordList(const vk::raii::CommandBuffer& cmd, uint32_t changed
   // The last indirect dispatch read the arguments this overwrites.
   auto afterRead = gpu::bufferBarrier(counters_.handle(), gpu::access::indirectRead, gpu::access::computeWrite);
   gpu::pipelineBarrier(cmd, std::span(&afterRead, 1));
-  shader::WaterTileListParams p{.tilesPerSide = perSide_,
-                                .boundary = boundary_ == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
-                                .changedStep = changedStep,
-                                .accumulate = accumulate ? 1u : 0u};
+  shader::WaterTileListParams p{
+      .tilesPerSide = perSide_,
+      .boundary = boundary_ == Boundary::Wrap ? TP_WATER_BOUNDARY_WRAP : TP_WATER_BOUNDARY_CLAMP,
+      .changedStep = changedStep,
+      .accumulate = accumulate ? 1u : 0u};
   gpu::bindPipeline(cmd, listPipeline_, p);
   gpu::bindSet(cmd, listPipeline_, listSet_);
   gpu::dispatch(cmd, 1);

@@ -17,16 +17,16 @@
 #include <cstdint>
 
 #include "gpu/context.hpp"
+#include "gpu/descriptors.hpp"
 #include "gpu/memory.hpp"
 #include "gpu/pipeline.hpp"
-#include "gpu/descriptors.hpp"
 #include "sim/water_params.hpp"
 
 namespace tp::sim {
 
 // Whether a step should dispatch the list of active tiles rather than every
 // tile, given how many tiles the last step listed. Measured with `tidepool
-// bench tiles` (README, "Active tiles"): see water_tiles.cpp.
+// bench tiles` (docs/simulation.md, "Active tiles"): see water_tiles.cpp.
 bool preferActiveList(uint32_t listedTiles, uint32_t allTiles);
 
 // Tiles dispatched by steps, since the last read.

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/water_state_file.hpp"
 #include "sim/water_state.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -20,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::fwrite(data, 1, size, file);
   std::fclose(file);
   try {
-    const tp::sim::WaterState state = tp::sim::readStateExr(path);
+    const tp::sim::WaterState state = tp::io::readStateExr(path);
     const size_t cells = size_t(state.n) * state.n;
     if (state.n < 2 || state.u.size() != cells || state.v.size() != cells) std::abort();
   } catch (const std::runtime_error&) {

@@ -1,0 +1,161 @@
+#include "bench/bench_command.hpp"
+
+#include "cli/gpu_session.hpp"
+
+namespace tp::app {
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time against error, as a table, CSV and a plot");
+  bench->require_subcommand(1);
+  CLI::App* sim = bench->add_subcommand(
+      "sim", "Water stepper: GPU (one step per dispatch, tiled) against an OpenMP C++ loop, cells/s and error");
+  sim->add_option("--sizes", o.sim.sizes, "Grid sides to measure")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  sim->add_option("--csv", o.sim.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  sim->add_option("--plot", o.sim.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 60.0));
+  addGpuOptions(sim, o.sim.validate, o.sim.device);
+  CLI::App* tiles = bench->add_subcommand("tiles",
+                                          "Water stepper on active tiles: ms per step over all tiles, over the active "
+                                          "list and with the one-step kernel, against the fraction of tiles active");
+  tiles->add_option("--sizes", o.tiles.sizes, "Grid sides to measure")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  tiles->add_option("--radii", o.tiles.radii, "Drop radii as fractions of the side (0: calm water)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 2.0));
+  tiles->add_option("--steps", o.tiles.steps, "Steps per timed submission, right after the drop")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  tiles->add_option("--repeats", o.tiles.repeats, "Timed submissions per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  tiles->add_option("--csv", o.tiles.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  tiles->add_option("--plot", o.tiles.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(tiles, o.tiles.validate, o.tiles.device);
+  CLI::App* water = bench->add_subcommand(
+      "water",
+      "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
+  water->add_option("--scene", o.water.scenePath, "Scene file (JSON); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  water->add_option("--resolutions", o.water.resolutions, "Image sizes WxH, each side 8 to 4096")
+      ->delimiter(',')
+      ->capture_default_str();
+  water->add_option("--frame", o.water.frame, "Frame of the water to render")->capture_default_str();
+  water->add_option("--samples", o.water.samples, "Samples per pixel of the reference")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4096u));
+  water->add_option("--repeats", o.water.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  water->add_option("--csv", o.water.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  water->add_option("--plot", o.water.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(water, o.water.validate, o.water.device);
+  CLI::App* ssao = bench->add_subcommand(
+      "ssao", "SSAO settings and presets on one frame: GPU ms of the AO passes against error from ray-traced AO");
+  ssao->add_option("--scene", o.ssao.scenePath, "Scene file (JSON); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  ssao->add_option("--resolution", o.ssao.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  ssao->add_option("--frame", o.ssao.frame, "Frame of the water to render")->capture_default_str();
+  ssao->add_option("--repeats", o.ssao.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ssao->add_option("--csv", o.ssao.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  ssao->add_option("--plot", o.ssao.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(ssao, o.ssao.validate, o.ssao.device);
+  CLI::App* frame = bench->add_subcommand(
+      "frame",
+      "Scene variants as frame sequences with skipping on and off: GPU ms per frame and the passes, "
+      "dispatches, draws and workgroups recorded");
+  frame
+      ->add_option("--scene", o.frame.scenePath,
+                   "Scene file (JSON) the variants start from; default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  frame->add_option("--resolution", o.frame.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  frame->add_option("--frames", o.frame.frames, "Timed frames of each sequence (frames 1..N, after frame 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 100000u));
+  frame->add_option("--csv", o.frame.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  frame->add_option("--plot", o.frame.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(frame, o.frame.validate, o.frame.device);
+  CLI::App* ibl = bench->add_subcommand(
+      "ibl",
+      "Sky irradiance (SH9) by importance and by uniform sampling, and the glossy prefilter by environment, lobe and "
+      "MIS sampling: samples against error against GPU ms");
+  ibl->add_option("--scene", o.ibl.scenePath,
+                  "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  ibl->add_option("--width", o.ibl.width, "Environment texels across (even; height is half)")
+      ->capture_default_str()
+      ->check(CLI::Range(16u, 8192u));
+  ibl->add_option("--samples", o.ibl.samples, "Sample counts to measure")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1u << 22));
+  ibl->add_option("--rotations", o.ibl.rotations, "Independent sample sets per case (errors: RMS over them)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ibl->add_option("--repeats", o.ibl.repeats, "Timed CDF builds; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  ibl->add_option("--csv", o.ibl.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  ibl->add_option("--plot", o.ibl.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  ibl->add_option("--glossy-samples", o.ibl.glossySamples,
+                  "Glossy prefilter samples per texel to measure (MIS: half from the environment, half from the lobe)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(2u, 65536u));
+  ibl->add_option("--glossy-csv", o.ibl.glossyCsv, "CSV output of the glossy prefilter")
+      ->type_name("PATH")
+      ->capture_default_str();
+  ibl->add_option("--glossy-plot", o.ibl.glossyPlot, "PNG plot of the glossy prefilter (empty: none)")
+      ->type_name("PATH")
+      ->capture_default_str();
+  addGpuOptions(ibl, o.ibl.validate, o.ibl.device);
+  CLI::App* glass = bench->add_subcommand(
+      "glass",
+      "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");
+  glass
+      ->add_option("--scene", o.glass.scenePath,
+                   "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  glass->add_option("--resolution", o.glass.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  glass->add_option("--steps", o.glass.steps, "Binary-search steps to measure, each 1 to 64")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 64u));
+  glass->add_option("--samples", o.glass.samples, "Samples per pixel of the reference")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4096u));
+  glass->add_option("--repeats", o.glass.repeats, "Timed frames per case; the median is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 1000u));
+  glass->add_option("--csv", o.glass.csv, "CSV output")->type_name("PATH")->capture_default_str();
+  glass->add_option("--plot", o.glass.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+  addGpuOptions(glass, o.glass.validate, o.glass.device);
+  return bench;
+}
+
+int runBench(CLI::App* bench, const BenchOptions& o) {
+  if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
+  if (bench->get_subcommand("tiles")->parsed()) return runBenchTiles(o.tiles);
+  if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
+  if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
+  if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);
+  if (bench->get_subcommand("ibl")->parsed()) return runBenchIbl(o.ibl);
+  if (bench->get_subcommand("glass")->parsed()) return runBenchGlass(o.glass);
+  return 2;
+}
+
+}  // namespace tp::app

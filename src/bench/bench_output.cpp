@@ -1,0 +1,52 @@
+#include "bench/bench_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "base/atomic_file.hpp"
+#include "bench/plot.hpp"
+
+namespace tp::app {
+
+void checkBenchOutputs(const std::string& csv, const std::string& plot) {
+  base::requireExtension(csv, ".csv");
+  base::checkWritable(csv);
+  if (!plot.empty()) {
+    base::requireExtension(plot, ".png");
+    base::checkWritable(plot);
+  }
+}
+
+void commitBenchCsv(base::AtomicFile& file, std::ofstream& csv, const std::string& plotScript,
+                    const std::string& plot) {
+  csv.close();
+  if (!csv) throw std::runtime_error("cannot write " + file.target());
+  file.commit();
+  std::printf("wrote %s\n", file.target().c_str());
+  if (!plot.empty()) plotCsv(plotScript, file.target(), plot);
+}
+
+Resolution parseResolution(const std::string& text, const std::string& bench) {
+  unsigned w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096) {
+    throw std::runtime_error(bench + ": resolution '" + text + "' is not WxH with sides 8 to 4096");
+  }
+  return {w, h};
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values.empty() ? std::nan("") : values[values.size() / 2];
+}
+
+std::string formatNumber(const char* format, double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, x);
+  return buffer;
+}
+
+}  // namespace tp::app

@@ -1,0 +1,34 @@
+#pragma once
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace tp::base {
+class AtomicFile;
+}
+
+namespace tp::app {
+
+// Every benchmark writes a CSV and, unless `plot` is empty, a PNG: both are
+// checked before any measuring starts, so a bad path costs nothing.
+void checkBenchOutputs(const std::string& csv, const std::string& plot);
+
+// Closes `csv`, written to file.tempPath(), renames it into place and says so;
+// then plots it with tools/<plotScript> unless `plot` is empty.
+void commitBenchCsv(base::AtomicFile& file, std::ofstream& csv, const std::string& plotScript, const std::string& plot);
+
+// An image size given as WxH, each side 8 to 4096; `bench` names the
+// benchmark in the error.
+struct Resolution {
+  uint32_t width = 0, height = 0;
+};
+Resolution parseResolution(const std::string& text, const std::string& bench);
+
+// The median of timed repeats (NaN for none).
+double median(std::vector<double> values);
+
+// One CSV or table cell: x printed with a printf format.
+std::string formatNumber(const char* format, double x);
+
+}  // namespace tp::app

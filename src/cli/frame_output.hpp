@@ -1,0 +1,32 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cli/render_command.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace tp::app {
+
+// Whether --aov asked for `name`.
+bool wants(const std::vector<std::string>& aovs, const char* name);
+
+// What `render` asks of the renderer for its options: the AOV targets, the
+// skipping, and each frame's readbacks (HDR, the PNG's LDR, the AOVs).
+struct RasterPlan {
+  render::RendererOptions renderer;
+  render::FrameRequest request;  // its frame number is the caller's to set
+};
+// Throws one line when --aov asks for the AO channels and the SSAO passes do
+// not run (--reference, --no-ao, a scene with ao.enabled false).
+RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene);
+
+// Writes a rendered frame as `render` writes it: an EXR at `exr` (RGBA, half
+// unless --float, then the AOVs asked for as float channels, with the camera
+// attributes; ao_ref ray traced here from the frame's G-buffer), and the
+// tonemapped PNG at `png` unless it is empty; each through a temporary file.
+void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
+                uint32_t frameNumber, const std::string& exr, const std::string& png);
+
+}  // namespace tp::app

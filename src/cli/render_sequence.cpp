@@ -1,0 +1,126 @@
+#include "cli/render_sequence.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "base/atomic_file.hpp"
+#include "cli/checkpoint_files.hpp"
+#include "cli/frame_output.hpp"
+#include "cli/frame_sequence.hpp"
+#include "cli/gpu_session.hpp"
+#include "cli/interrupt_guard.hpp"
+#include "cli/sequence_progress.hpp"
+#include "io/image_io.hpp"
+#include "render/renderer.hpp"
+
+namespace tp::app {
+namespace {
+
+// Whether a frame's files are there and whole: each readable to its end at
+// the frame's size (the EXR with its RGBA), as a finished render leaves them.
+bool alreadyWritten(const std::string& exr, const std::string& png, uint32_t width, uint32_t height) {
+  try {
+    for (const std::string& path : {exr, png}) {
+      if (path.empty()) continue;
+      if (!std::filesystem::is_regular_file(path)) return false;
+      const io::FloatImage image = io::readImage(path);
+      if (image.width != width || image.height != height || image.channels.size() < 4) return false;
+    }
+    return true;
+  } catch (const std::exception&) {
+    return false;  // truncated or not an image: written again
+  }
+}
+
+const char* signalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
+
+}  // namespace
+
+int runRenderSequence(const RenderOptions& o) {
+  const FrameRange range = parseFrameRange(o.frames);
+  if (!hasFrameField(o.out)) {
+    throw std::runtime_error("--out " + o.out +
+                             ": with --frames the path needs #### where the frame number goes, "
+                             "e.g. frames/shot.####.exr");
+  }
+  if (!o.png.empty() && !hasFrameField(o.png)) {
+    throw std::runtime_error("--png " + o.png + ": with --frames the path needs #### where the frame number goes");
+  }
+  base::requireExtension(o.out, ".exr");
+  base::checkWritable(framePath(o.out, range.first));
+  if (!o.png.empty()) {
+    base::requireExtension(o.png, ".png");
+    base::checkWritable(framePath(o.png, range.first));
+  }
+  if (o.checkpointEvery > 0 && o.checkpointDir.empty())
+    throw std::runtime_error("--checkpoint-every needs --checkpoint-dir");
+  if (!o.checkpointDir.empty()) {
+    if (!std::filesystem::is_directory(o.checkpointDir)) {
+      throw std::runtime_error("--checkpoint-dir " + o.checkpointDir + ": not a folder");
+    }
+    base::checkWritable((std::filesystem::path(o.checkpointDir) / "water.000000.json").string());
+  }
+  const scene::Scene scene = loadScene(o.scene);
+  RasterPlan plan = rasterPlan(o, scene);
+  if (!o.checkpointDir.empty() && !scene.water.enabled) {
+    throw std::runtime_error("--checkpoint-dir: the scene has no water to checkpoint");
+  }
+
+  std::vector<uint32_t> todo;
+  for (uint32_t f = range.first;; ++f) {
+    if (!(o.resume &&
+          alreadyWritten(framePath(o.out, f), o.png.empty() ? "" : framePath(o.png, f), o.width, o.height))) {
+      todo.push_back(f);
+    }
+    if (f == range.last) break;
+  }
+  if (todo.empty()) {
+    std::printf("frames %u-%u: all %u already written\n", range.first, range.last, range.count());
+    return 0;
+  }
+  if (todo.size() < range.count()) {
+    std::printf("frames %u-%u: %zu already written, %zu to render\n", range.first, range.last,
+                range.count() - todo.size(), todo.size());
+  }
+
+  GpuSession session(o.validate, o.device);
+  render::Renderer renderer(session.context(), scene, o.width, o.height, plan.renderer);
+  const uint64_t fingerprint = scene.water.enabled ? waterFingerprint(scene) : 0;
+  if (!o.checkpointDir.empty()) {
+    if (const auto checkpoint = latestCheckpoint(o.checkpointDir, todo.front(), fingerprint)) {
+      renderer.resume(*checkpoint);
+      std::printf("resumed the water from checkpoint frame %u\n", checkpoint->frame);
+    }
+  }
+  InterruptGuard interrupts;
+  SequenceProgress progress(uint32_t(todo.size()), range.count());
+  uint32_t written = 0;
+  for (const uint32_t f : todo) {
+    if (InterruptGuard::received()) break;
+    plan.request.frame = f;
+    const render::RenderedFrame frame = renderer.render(plan.request);
+    const std::string exr = framePath(o.out, f);
+    writeFrame(o, scene, frame, f, exr, o.png.empty() ? "" : framePath(o.png, f));
+    if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0)
+      saveCheckpoint(o.checkpointDir, renderer.checkpoint(), fingerprint);
+    ++written;
+    progress.rendered(f, exr);
+  }
+  progress.finish();
+  if (const int signal = InterruptGuard::received()) {
+    std::fprintf(stderr,
+                 "render: stopped by %s after %u of %zu frames, each written whole; run again with --resume "
+                 "to render the rest\n",
+                 signalName(signal), written, todo.size());
+    session.finish();
+    return InterruptGuard::exitCode();
+  }
+  std::printf("wrote frames %u-%u (%u rendered) at %ux%u on %s\n", range.first, range.last, written, o.width, o.height,
+              session.context().deviceName().c_str());
+  return session.finish();
+}
+
+}  // namespace tp::app

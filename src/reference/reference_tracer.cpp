@@ -1,0 +1,310 @@
+#include "reference/reference_tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "reference/glossy_quadrature.hpp"
+#include "reference/reference_scene.hpp"
+#include "reference/row_progress.hpp"
+#include "render/sky_image.hpp"
+#include "shading/frame_uniforms.hpp"
+#include "shading/glossy_model.hpp"
+#include "shading/hammersley.hpp"
+#include "shading/pool_model.hpp"
+#include "shading/sky_model.hpp"
+#include "shading/water_model.hpp"
+#include "shared/glass.h"
+#include "shared/glossy.h"
+#include "shared/objects.h"
+#include "shared/shading.h"
+#include "shared/sky.h"
+
+namespace tp::render {
+namespace {
+
+// How far a continued ray starts off the surface it leaves, in metres: far
+// above float round-off at the scene's scale (metres), far below any feature.
+constexpr float kSurfaceOffset = 1e-4f;
+
+enum class Material { Ground, PoolWalls, PoolFloor, Water, Box, Sphere };
+
+Material materialOf(const std::string& meshName) {
+  if (meshName == "ground") return Material::Ground;
+  if (meshName == "pool_walls") return Material::PoolWalls;
+  if (meshName == "pool_floor") return Material::PoolFloor;
+  if (meshName == "water") return Material::Water;
+  if (meshName.rfind("box", 0) == 0) return Material::Box;
+  if (meshName.rfind("sphere", 0) == 0) return Material::Sphere;
+  throw std::logic_error("reference: no material for mesh " + meshName);
+}
+
+// Unpolarised Fresnel reflectance for a ray meeting a surface at cosI, going
+// from index n1 into n2; 1 under total internal reflection (cosT < 0 then).
+float fresnel(float cosI, float n1, float n2, float& cosT) {
+  const float eta = n1 / n2;
+  const float sin2T = eta * eta * (1.0f - cosI * cosI);
+  if (sin2T >= 1.0f) {
+    cosT = -1.0f;
+    return 1.0f;
+  }
+  cosT = std::sqrt(1.0f - sin2T);
+  const float rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+  const float rp = (n1 * cosT - n2 * cosI) / (n1 * cosT + n2 * cosI);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+struct SurfacePoint {
+  glm::vec3 position{std::numeric_limits<float>::infinity()};
+  glm::vec3 normal{0.0f};
+};
+
+class Tracer {
+ public:
+  Tracer(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const shader::FrameUniforms& uniforms,
+         std::optional<SkyImage> skyImage, uint32_t maxSpecular)
+      : uniforms_(uniforms),
+        sky_(skyParams(scene.sky)),
+        skyImage_(std::move(skyImage)),
+        ground_(groundParams(scene)),
+        maxSpecular_(maxSpecular),
+        absorption_(scene.water.absorption),
+        ior_(scene.water.ior) {
+    if (hasPool(scene)) pool_ = poolParams(scene);
+    // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
+    if (hasGlossySurface(scene))
+      glossySky_ = skyImage_ ? *skyImage_ : proceduralSkyImage(scene.sky, scene.sky.textureWidth);
+    const float time = float(frame) * scene.water.frameTime;
+    const scene::Scene placed = scene::sceneAt(scene, time);
+    std::vector<scene::Mesh> traced;
+    size_t boxes = 0;
+    for (auto& mesh : sceneMeshes(scene, water, time)) {
+      const Material m = materialOf(mesh.name);
+      if (m == Material::Sphere) continue;  // cast exactly instead of their tessellation
+      materials_.push_back(m);
+      albedo_.push_back(m == Material::Box ? placed.boxes.at(boxes++).albedo : glm::vec3(0.0f));
+      if (m == Material::Water) waterMesh_ = int(traced.size());
+      traced.push_back(std::move(mesh));
+    }
+    // Glass spheres are seen from the camera alone (cameraRadiance); the
+    // other rays pass them by, as the raster's water does.
+    for (const scene::Sphere& sphere : placed.spheres) (scene::isGlass(sphere) ? glass_ : spheres_).push_back(sphere);
+    if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
+    bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
+    tracedMeshes_ = std::move(traced);
+  }
+
+  // Radiance arriving at the camera at `origin` from direction -dir: a glass
+  // sphere, if one is nearer than what radiance() meets, else that.
+  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular,
+                           SurfacePoint* first) const {
+    const scene::Sphere* glass = nullptr;
+    float nearest = std::numeric_limits<float>::infinity();
+    for (const scene::Sphere& sphere : glass_) {
+      const float s = shader::raySphere(origin, dir, glm::vec4(sphere.center, sphere.radius));
+      if (s > 0.0f && s < nearest) {
+        nearest = s;
+        glass = &sphere;
+      }
+    }
+    if (glass) {
+      const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
+      if (!hit.hit() || hit.distance > nearest) {
+        const glm::vec3 p = origin + nearest * dir;
+        if (first) *first = {p, glm::normalize(p - glass->center)};
+        const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * nearest) : glm::vec3(1.0f);
+        return transmittance * glassRadiance(*glass, p, dir);
+      }
+    }
+    return radiance(origin, dir, inWater, specular, first);
+  }
+
+  // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
+  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, SurfacePoint* first) const {
+    const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
+    if (!hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
+    const glm::vec3 p = origin + hit.distance * dir;
+    const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * hit.distance) : glm::vec3(1.0f);
+    if (hit.sphere >= 0) {
+      const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
+      const glm::vec3 n = glm::normalize(p - sphere.center);
+      if (first) *first = {p, n};
+      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n), dir, n,
+                                    glm::vec2(sphere.specular, sphere.roughness));
+    }
+    const glm::vec2 xz(p.x, p.z);
+    switch (materials_[size_t(hit.mesh)]) {
+      case Material::Ground: {
+        const glm::vec3 n(0.0f, 1.0f, 0.0f);
+        if (first) *first = {p, n};
+        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, 1.0f);
+      }
+      case Material::PoolWalls: {
+        const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+        if (first) *first = {p, n};
+        return transmittance * glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f)), dir, n,
+                                      glm::vec2(pool_.wallGloss));
+      }
+      case Material::PoolFloor: {
+        const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
+        if (first) *first = {p, n};
+        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), 1.0f);
+      }
+      case Material::Box: {
+        const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+        if (first) *first = {p, n};
+        return transmittance * shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n);
+      }
+      case Material::Water:
+        return transmittance * water(p, dir, hit, specular, first);
+      case Material::Sphere:
+        break;
+    }
+    return glm::vec3(0.0f);
+  }
+
+ private:
+  glm::vec3 sky(glm::vec3 dir) const {
+    return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
+  }
+
+  // The glass model of shared/glass.h with the exact exit point: the chord of
+  // the sphere from p along the refracted ray, its far end at distance
+  // -2 (p - c).t (p on the sphere).
+  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir) const {
+    const glm::vec3 n = glm::normalize(p - glass.center);
+    const float reflectance = shader::fresnelDielectric(std::max(-glm::dot(dir, n), 0.0f), 1.0f, glass.ior);
+    const glm::vec3 inside = glm::refract(dir, n, 1.0f / glass.ior);
+    const glm::vec3 exit = p - 2.0f * glm::dot(p - glass.center, inside) * inside;
+    const glm::vec3 leaving = shader::glassExitDirection(inside, glm::normalize(exit - glass.center), glass.ior);
+    return glm::mix(sky(leaving), sky(glm::reflect(dir, n)), reflectance);
+  }
+
+  // A surface's radiance with its glossy lobe (material: specular, roughness)
+  // about the mirror direction of `dir` in n: G exactly, by quadrature.
+  glm::vec3 glossy(glm::vec3 diffuse, glm::vec3 dir, glm::vec3 n, glm::vec2 material) const {
+    if (material.x <= 0.0f) return diffuse;
+    const glm::dvec3 g =
+        GlossyQuadrature(*glossySky_).radiance(glm::reflect(dir, n), shader::glossyExponent(material.y));
+    return shader::glossyMix(diffuse, glm::vec3(g), material.x);
+  }
+
+  // Both branches at the surface, weighted by the exact Fresnel reflectance.
+  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, SurfacePoint* first) const {
+    const scene::Mesh& mesh = tracedMeshes_[size_t(waterMesh_)];
+    const uint32_t* corner = &mesh.indices[size_t(hit.triangle) * 3];
+    const glm::vec2 b = hit.barycentric;
+    const glm::vec3 shading = glm::normalize((1.0f - b.x - b.y) * waterNormals_[corner[0]] +
+                                             b.x * waterNormals_[corner[1]] + b.y * waterNormals_[corner[2]]);
+    if (first) *first = {p, shading};
+    if (specular >= maxSpecular_) return glm::vec3(0.0f);
+    const glm::vec3 up = hit.geometricNormal.y < 0.0f ? -hit.geometricNormal : hit.geometricNormal;
+    const bool fromAbove = glm::dot(dir, up) < 0.0f;
+    glm::vec3 n = fromAbove ? shading : -shading;  // facing the ray
+    float cosI = -glm::dot(dir, n);
+    if (cosI <= 0.0f) {  // an interpolated normal facing away: fall back to the flat triangle's
+      n = fromAbove ? up : -up;
+      cosI = -glm::dot(dir, n);
+    }
+    float cosT = 0.0f;
+    const float n1 = fromAbove ? 1.0f : ior_, n2 = fromAbove ? ior_ : 1.0f;
+    const float reflectance = fresnel(cosI, n1, n2, cosT);
+    auto follow = [&](glm::vec3 d) {
+      const bool below = glm::dot(d, up) < 0.0f;
+      const glm::vec3 start = p + (below ? -kSurfaceOffset : kSurfaceOffset) * up;
+      return radiance(start, d, below, specular + 1, nullptr);
+    };
+    glm::vec3 result = reflectance * follow(glm::normalize(dir + 2.0f * cosI * n));
+    if (reflectance < 1.0f) {
+      const float eta = n1 / n2;
+      result += (1.0f - reflectance) * follow(glm::normalize(eta * dir + (eta * cosI - cosT) * n));
+    }
+    return result;
+  }
+
+  shader::FrameUniforms uniforms_;
+  shader::SkyParams sky_;
+  std::optional<SkyImage> skyImage_;
+  std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
+  shader::GroundParams ground_;
+  shader::PoolParams pool_{};
+  uint32_t maxSpecular_;
+  glm::vec3 absorption_;
+  float ior_;
+  std::vector<scene::Mesh> tracedMeshes_;
+  std::vector<Material> materials_;
+  std::vector<glm::vec3> albedo_;  // per traced mesh: the boxes'; unused for the others
+  int waterMesh_ = -1;
+  std::vector<glm::vec3> waterNormals_;
+  std::vector<scene::Sphere> spheres_;  // the Lambertian ones, where they are at the frame's time
+  std::vector<scene::Sphere> glass_;    // the glass ones
+  std::unique_ptr<ReferenceScene> bvh_;
+};
+
+}  // namespace
+
+RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, uint32_t width,
+                              uint32_t height, const ReferenceOptions& options) {
+  if (options.samples == 0) throw std::invalid_argument("reference samples must be at least 1");
+  std::optional<SkyImage> skyImage;
+  SkyLight light = proceduralSkyLight(scene.sky);
+  if (!scene.sky.image.empty()) {
+    skyImage = loadSkyImage(scene.sky.image);
+    light = skyImageLight(*skyImage);
+  }
+  const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
+  const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
+  // Camera rays start in the water when the camera is under the surface.
+  const bool cameraInWater = cameraMedium(scene, water).absorption.w > 0.0f;
+
+  RenderedFrame out;
+  out.width = width;
+  out.height = height;
+  out.worldToCamera = uniforms.view;
+  out.worldToNDC = uniforms.viewProjection;
+  const size_t pixels = size_t(width) * height;
+  out.rgba.assign(pixels * 4, 0.0f);
+  out.normal.assign(pixels * 4, 0.0f);
+  out.position.assign(pixels * 4, std::numeric_limits<float>::infinity());
+
+  const glm::vec3 eye = scene.camera.position;
+  // The ray through a point of the image (pixels, top-left origin) from the near plane on.
+  auto cameraRay = [&](float px, float py, glm::vec3& origin, glm::vec3& dir) {
+    const glm::vec2 ndc(2.0f * px / float(width) - 1.0f, 2.0f * py / float(height) - 1.0f);
+    const glm::vec4 nearPoint = uniforms.inverseViewProjection * glm::vec4(ndc, 0.0f, 1.0f);
+    origin = glm::vec3(nearPoint) / nearPoint.w;
+    dir = glm::normalize(origin - eye);
+  };
+  RowProgress progress(height, options.progress);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const size_t k = size_t(y) * width + x;
+      glm::vec3 origin, dir, sum(0.0f);
+      for (uint32_t s = 0; s < options.samples; ++s) {
+        const float sx = (float(s) + 0.5f) / float(options.samples),
+                    sy = options.samples == 1 ? 0.5f : radicalInverse(s);
+        cameraRay(float(x) + sx, float(y) + sy, origin, dir);
+        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, nullptr);
+      }
+      const glm::vec3 color = sum / float(options.samples);
+      SurfacePoint first;
+      cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
+      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, &first);  // no branches: the surface alone
+      for (int c = 0; c < 3; ++c) {
+        out.rgba[k * 4 + c] = color[c];
+        out.normal[k * 4 + c] = first.normal[c];
+        out.position[k * 4 + c] = first.position[c];
+      }
+      out.rgba[k * 4 + 3] = 1.0f;
+      if (std::isfinite(first.position.x))
+        out.position[k * 4 + 3] = -(uniforms.view * glm::vec4(first.position, 1.0f)).z;
+    }
+    progress.rowDone();
+  }
+  return out;
+}
+
+}  // namespace tp::render

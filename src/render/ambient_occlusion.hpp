@@ -1,0 +1,50 @@
+#pragma once
+// Screen-space ambient occlusion: SSAO from the opaque surfaces' depth and
+// G-buffer, the separable blur, the depth-aware upsample (half resolution),
+// and the AO put into the frame (shaders_glsl/ssao.comp, ao_blur.comp,
+// ao_upsample.comp, ao_apply.comp); with the readbacks a frame asking for its
+// AO uses (declared with them, so the depth read back is the opaque
+// surfaces', before the water draws over it).
+#include <optional>
+
+#include "graph/readback.hpp"
+#include "render/surfaces.hpp"
+#include "scene/scene.hpp"
+
+namespace tp::render {
+
+class AmbientOcclusion {
+ public:
+  AmbientOcclusion(const gpu::Context& ctx, FrameGraph& graph, const scene::Ao& ao, vk::Extent2D frame);
+  void declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
+  // What a frame requests to read the AO back.
+  std::vector<ResourceRef> readbackRefs() const;
+  vk::Extent2D lowExtent() const { return low_; }
+  // After a frame that requested them: the AO (frame size, after blur and
+  // upsample), the unblurred SSAO (lowExtent), and the G-buffer it came from
+  // (depth; xyz0 view normal).
+  struct Readings {
+    std::vector<float> ao, raw, depth, viewNormal;
+  };
+  Readings read() const;
+
+ private:
+  // The AO at the AO resolution after the blur (or the raw AO without one).
+  const GraphImage& lowResult() const { return blurred_ ? blurred_ : raw_; }
+  // The frame-size AO the apply pass reads.
+  const GraphImage& result() const { return full_ ? full_ : lowResult(); }
+  void declareFilter(FrameGraph& graph, const PassKind& kind, const gpu::Pipeline& pipeline,
+                     const SurfaceTargets& surfaces, const FrameInputs& in, const GraphImage& from,
+                     const GraphImage& to, const std::function<void(const vk::raii::CommandBuffer&)>& push,
+                     vk::Extent2D size) const;
+
+  scene::Ao ao_;
+  vk::Extent2D frame_, low_;
+  gpu::Image rawImage_, blurXImage_, blurredImage_, fullImage_;
+  GraphImage raw_, blurX_, blurred_, full_;  // no blur images with the blur off; no full image at full resolution
+  gpu::Buffer kernel_;
+  gpu::Pipeline ssao_, blur_, upsample_, apply_;
+  Readback aoReadback_, rawReadback_, depthReadback_, normalReadback_;
+};
+
+}  // namespace tp::render

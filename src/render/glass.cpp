@@ -1,0 +1,100 @@
+#include "render/glass.hpp"
+
+#include <array>
+
+#include "gpu/commands.hpp"
+#include "gpu/descriptors.hpp"
+#include "render/pass_kinds.hpp"
+#include "shading/objects_model.hpp"
+
+namespace tp::render {
+namespace {
+
+// sphere.vert tessellates each sphere (GlassSphereParams begins with its
+// SphereParams); the back faces with the front ones culled, and the reverse.
+gpu::GraphicsPipelineDesc glassSide(const char* fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull) {
+  return {.vertexShader = "sphere.vert",
+          .fragmentShader = fragmentShader,
+          .pushSize = sizeof(shader::GlassSphereParams),
+          .colorFormats = {colorFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true,
+          .cullMode = cull};
+}
+
+void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeline,
+                 const std::vector<shader::GlassSphereParams>& spheres) {
+  for (const auto& sphere : spheres) {
+    gpu::bindPipeline(cmd, pipeline, sphere);
+    gpu::draw(cmd, sphereVertexCount(sphere.tessellation));
+  }
+}
+
+}  // namespace
+
+Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame)
+    : back_(gpu::createGraphicsPipeline(ctx,
+                                        glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
+      front_(gpu::createGraphicsPipeline(ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack))) {
+  backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
+                                  vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
+                                  "glass back faces");
+  depth_ = gpu::createImage2D(ctx, frame, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                              "glass back-face depth");
+  backFacesRef_ = graph.image("glass back faces", backFaces_);
+  depthRef_ = graph.image("glass depth", depth_);
+}
+
+void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
+                    const std::vector<shader::GlassSphereParams>& spheres) const {
+  auto inView = [&spheres] { return !spheres.empty(); };
+  // The nearest back face of any glass sphere, alone: the opaque surfaces do
+  // not hide it (a refracted ray may leave behind one of them).
+  graph.pass(passes::kGlassBackFaces,
+             [this, in, &spheres](PassBuilder& pass) {
+               const gpu::Image& backFaces = pass.attach(backFacesRef_, Use::ColorWrite);
+               const gpu::Image& depth = pass.attach(depthRef_, Use::DepthWrite);
+               Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+               return [this, &backFaces, &depth, &set, &spheres](PassContext& pc) {
+                 const auto& cmd = pc.cmd;
+                 auto target =
+                     attachment(backFaces, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                                vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
+                 auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal,
+                                               vk::AttachmentLoadOp::eClear, vk::ClearValue{.depthStencil = {1.0f, 0}});
+                 cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, backFaces.extent},
+                                                      .layerCount = 1,
+                                                      .colorAttachmentCount = 1,
+                                                      .pColorAttachments = &target,
+                                                      .pDepthAttachment = &depthTarget});
+                 setViewport(cmd, backFaces.extent);
+                 cmd.bindPipeline(back_.bindPoint, *back_.pipeline);
+                 set.bind(cmd, back_, pc.descriptors);
+                 drawSpheres(cmd, back_, spheres);
+                 cmd.endRendering();
+               };
+             },
+             {.cached = false, .runIf = inView});
+  // The front faces over the frame, depth tested against what is drawn.
+  graph.pass(passes::kGlass,
+             [this, frame, in, &spheres](PassBuilder& pass) {
+               const gpu::Image& color = pass.attach(frame.color, Use::ColorReadWrite);
+               const gpu::Image& depth = pass.attach(frame.depth, Use::DepthReadWrite);
+               Bindings& set = pass.bindings()
+                                   .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
+                                   .sampledImage(2, backFacesRef_, in.nearest, Use::FragmentSample)
+                                   .uniformBuffer(3, in.medium, Use::FragmentUniformRead);
+               return [this, &color, &depth, &set, &spheres](PassContext& pc) {
+                 drawOver(pc.cmd, color, depth, [&] {
+                   pc.cmd.bindPipeline(front_.bindPoint, *front_.pipeline);
+                   set.bind(pc.cmd, front_, pc.descriptors);
+                   drawSpheres(pc.cmd, front_, spheres);
+                 });
+               };
+             },
+             {.cached = false, .runIf = inView});
+}
+
+}  // namespace tp::render

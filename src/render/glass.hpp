@@ -1,0 +1,31 @@
+#pragma once
+// Glass spheres, Wyman's two-interface refraction in image space (2005): a
+// pass draws their back faces into a normal and view-depth target, then a
+// pass draws their front faces over the frame, each pixel searching that
+// target for where its refracted ray leaves (shaders_glsl/glass_back.frag,
+// glass.frag). Declared only for a scene with glass; recorded only for a
+// frame with glass spheres in view.
+#include <vector>
+
+#include "render/surfaces.hpp"
+#include "shared/glass.h"
+
+namespace tp::render {
+
+constexpr vk::Format kGlassBackFormat = vk::Format::eR32G32B32A32Sfloat;  // outward normal, view depth
+
+class Glass {
+ public:
+  // Makes the back faces' target and the depth buffer its draw tests against.
+  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame);
+  // `spheres`: the glass spheres in view when the frame records.
+  void declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
+               const std::vector<shader::GlassSphereParams>& spheres) const;
+
+ private:
+  gpu::Image backFaces_, depth_;
+  GraphImage backFacesRef_, depthRef_;
+  gpu::Pipeline back_, front_;
+};
+
+}  // namespace tp::render

@@ -1,0 +1,28 @@
+#include "render/ground.hpp"
+
+#include "gpu/commands.hpp"
+#include "render/pass_kinds.hpp"
+#include "shading/water_model.hpp"
+
+namespace tp::render {
+
+Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer)
+    : params_(groundParams(scene)),
+      pipeline_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer))) {}
+
+void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
+  graph.pass(passes::kGround, [this, targets, in](PassBuilder& pass) {
+    attachSurfaces(pass, targets, true);
+    Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+    return [this, targets, &set](PassContext& pc) {
+      drawSurfaces(pc.cmd, targets, true, [&] {
+        gpu::bindPipeline(pc.cmd, pipeline_, params_);
+        set.bind(pc.cmd, pipeline_, pc.descriptors);
+        gpu::draw(pc.cmd, kGroundVertices);
+      });
+    };
+  });
+}
+
+}  // namespace tp::render

@@ -1,0 +1,23 @@
+#pragma once
+// The checkered ground plane around the pool's hole, depth tested; the first
+// surface, so it clears depth and the G-buffer.
+#include "render/surfaces.hpp"
+#include "scene/scene.hpp"
+#include "shared/ground.h"
+
+namespace tp::render {
+
+constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the pool's hole
+
+class Ground {
+ public:
+  Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer);
+  const shader::GroundParams& params() const { return params_; }
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
+
+ private:
+  shader::GroundParams params_;
+  gpu::Pipeline pipeline_;
+};
+
+}  // namespace tp::render

@@ -1,0 +1,52 @@
+#include "render/objects.hpp"
+
+#include "gpu/commands.hpp"
+#include "render/pass_kinds.hpp"
+#include "shading/objects_model.hpp"
+
+namespace tp::render {
+
+Objects::Objects(const gpu::Context& ctx, bool gbuffer)
+    : spheres_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer))),
+      boxes_(gpu::createGraphicsPipeline(ctx,
+                                         opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
+
+void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
+                      const ObjectsInView& inView) const {
+  graph.pass(passes::kObjects,
+             [this, targets, in, &inView](PassBuilder& pass) {
+               attachSurfaces(pass, targets, false);
+               Bindings& set = pass.bindings()
+                                   .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .uniformBuffer(1, in.medium, Use::FragmentUniformRead)
+                                   .sampledImage(2, in.glossy, in.equirect, Use::FragmentSample);
+               return [this, targets, &set, &inView](PassContext& pc) {
+                 drawSurfaces(pc.cmd, targets, false,
+                              [&] { drawObjects(pc.cmd, pc.descriptors, spheres_, boxes_, set, inView); });
+               };
+             },
+             {.cached = false, .runIf = [&inView] { return !inView.empty(); }});
+}
+
+void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& spheres,
+                 const gpu::Pipeline& boxes, const Bindings& set, const ObjectsInView& inView) {
+  if (!inView.spheres.empty()) {
+    cmd.bindPipeline(spheres.bindPoint, *spheres.pipeline);
+    set.bind(cmd, spheres, arena);
+    for (const auto& sphere : inView.spheres) {
+      gpu::bindPipeline(cmd, spheres, sphere);
+      gpu::draw(cmd, sphereVertexCount(sphere.tessellation));
+    }
+  }
+  if (!inView.boxes.empty()) {
+    cmd.bindPipeline(boxes.bindPoint, *boxes.pipeline);
+    set.bind(cmd, boxes, arena);
+    for (const auto& box : inView.boxes) {
+      gpu::bindPipeline(cmd, boxes, box);
+      gpu::draw(cmd, kBoxVertices);
+    }
+  }
+}
+
+}  // namespace tp::render

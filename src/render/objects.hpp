@@ -1,0 +1,33 @@
+#pragma once
+// The scene's spheres and boxes, one draw each, where the renderer says they
+// are when the frame records (spheres may move from frame to frame); the
+// pass is left out of a frame where none is in view.
+#include <vector>
+
+#include "render/surfaces.hpp"
+#include "shared/objects.h"
+
+namespace tp::render {
+
+// The objects in view in the frame being recorded, filled by the renderer.
+struct ObjectsInView {
+  std::vector<shader::SphereParams> spheres;
+  std::vector<shader::BoxParams> boxes;
+  bool empty() const { return spheres.empty() && boxes.empty(); }
+};
+
+class Objects {
+ public:
+  Objects(const gpu::Context& ctx, bool gbuffer);
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
+               const ObjectsInView& inView) const;
+
+ private:
+  gpu::Pipeline spheres_, boxes_;
+};
+
+// Each sphere, then each box, with `set` holding what either pipeline reads.
+void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& spheres,
+                 const gpu::Pipeline& boxes, const Bindings& set, const ObjectsInView& inView);
+
+}  // namespace tp::render

@@ -1,0 +1,44 @@
+#pragma once
+// Every pass a frame can have, in the order a frame records them.
+#include "graph/pass_kind.hpp"
+
+namespace tp::render::passes {
+
+inline constexpr PassKind kSimulate{"simulate"};
+inline constexpr PassKind kCameraMedium{"camera medium"};
+inline constexpr PassKind kCaustics{"caustics"};
+inline constexpr PassKind kSky{"sky"};
+inline constexpr PassKind kGlossyPrefilter{"glossy prefilter"};
+inline constexpr PassKind kBackground{"background"};
+inline constexpr PassKind kGround{"ground"};
+inline constexpr PassKind kPool{"pool"};
+inline constexpr PassKind kObjects{"objects"};
+inline constexpr PassKind kSsao{"ssao"};
+inline constexpr PassKind kAoBlurX{"ao blur x"};
+inline constexpr PassKind kAoBlurY{"ao blur y"};
+inline constexpr PassKind kAoUpsample{"ao upsample"};
+inline constexpr PassKind kAoApply{"ao apply"};
+inline constexpr PassKind kReadbackAo{"readback ao"};
+inline constexpr PassKind kReadbackAoRaw{"readback ao raw"};
+inline constexpr PassKind kReadbackDepth{"readback depth"};
+inline constexpr PassKind kReadbackViewNormal{"readback view normal"};
+inline constexpr PassKind kUnderwater{"underwater"};
+inline constexpr PassKind kGlassBackFaces{"glass back faces"};
+inline constexpr PassKind kGlass{"glass"};
+inline constexpr PassKind kWater{"water"};
+inline constexpr PassKind kAov{"aov"};
+inline constexpr PassKind kReadbackNormal{"readback normal"};
+inline constexpr PassKind kReadbackPosition{"readback position"};
+inline constexpr PassKind kTonemap{"tonemap"};
+inline constexpr PassKind kReadbackHdr{"readback hdr"};
+inline constexpr PassKind kReadbackLdr{"readback ldr"};
+
+// The ambient occlusion's passes (bench ssao times them together).
+inline bool isAo(const PassKind* kind) {
+  for (const PassKind* ao : {&kSsao, &kAoBlurX, &kAoBlurY, &kAoUpsample, &kAoApply}) {
+    if (kind == ao) return true;
+  }
+  return false;
+}
+
+}  // namespace tp::render::passes

@@ -1,0 +1,100 @@
+#include "render/pool.hpp"
+
+#include <array>
+
+#include "gpu/commands.hpp"
+#include "gpu/transfer.hpp"
+#include "render/pass_kinds.hpp"
+#include "render/sky_image.hpp"
+#include "shading/pool_model.hpp"
+#include "shading/water_model.hpp"
+#include "shared/objects.h"
+
+namespace tp::render {
+
+Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
+    : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
+      floor_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {
+  const shader::PoolParams pool = poolParams(scene);
+  uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
+                                      gpu::MemoryUse::Upload, "pool uniforms");
+  const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
+  floorIndices_ = gpu::createFilledBuffer(ctx, floorGridIndices, vk::BufferUsageFlagBits::eIndexBuffer,
+                                          gpu::MemoryUse::Device, "pool floor indices");
+  // Filled by the renderer before each frame: the spheres may move.
+  objectUniforms_ = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
+                                      gpu::MemoryUse::Upload, "scene objects");
+  draw_ = PoolDraw{&uniforms_, &objectUniforms_, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid, {}};
+  if (scene.render.caustics) {
+    caustics_ =
+        gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
+                           vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled, "caustics");
+    draw_.caustics = graph.image("caustics", caustics_);
+    causticsPipeline_ = gpu::createGraphicsPipeline(ctx, {.vertexShader = "caustics.vert",
+                                                          .fragmentShader = "caustics.frag",
+                                                          .pushSize = sizeof(shader::WaterSurfaceParams),
+                                                          .colorFormats = {kCausticsFormat},
+                                                          .topology = vk::PrimitiveTopology::eTriangleStrip,
+                                                          .additive = true});
+  } else {
+    // The floor lit as through flat water: one texel of 1, uploaded once.
+    caustics_ = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
+    draw_.caustics = graph.image("caustics", caustics_, vk::ImageLayout::eShaderReadOnlyOptimal);
+  }
+}
+
+void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const {
+  if (!causticsPipeline_) return;
+  graph.pass(passes::kCaustics,
+             [this, water, in](PassBuilder& pass) {
+               const gpu::Image& target = pass.attach(draw_.caustics, Use::ColorWrite);
+               Bindings& set = pass.bindings()
+                                   .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(2, water.state, Use::VertexStorageRead)
+                                   .constantBuffer(3, uniforms_);
+               return [this, water, &target, &set](PassContext& pc) {
+                 auto colorTarget =
+                     attachment(target, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
+                                vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
+                 pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, target.extent},
+                                                         .layerCount = 1,
+                                                         .colorAttachmentCount = 1,
+                                                         .pColorAttachments = &colorTarget});
+                 setViewport(pc.cmd, target.extent);
+                 gpu::bindPipeline(pc.cmd, *causticsPipeline_, water.params);
+                 set.bind(pc.cmd, *causticsPipeline_, pc.descriptors);
+                 drawWater(pc.cmd, water);
+                 pc.cmd.endRendering();
+               };
+             },
+             {.cached = true, .runIf = {}});
+}
+
+void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
+  graph.pass(passes::kPool, [this, targets, in](PassBuilder& pass) {
+    attachSurfaces(pass, targets, false);
+    Bindings& set = pass.bindings()
+                        .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .constantBuffer(1, uniforms_)
+                        .sampledImage(2, draw_.caustics, in.clamp, Use::FragmentSample)
+                        .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
+                        .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample);
+    return [this, targets, &set](PassContext& pc) {
+      drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor_, set, draw_); });
+    };
+  });
+}
+
+void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
+              const gpu::Pipeline& floor, const Bindings& set, const PoolDraw& pool) {
+  cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
+  set.bind(cmd, walls, arena);
+  gpu::draw(cmd, kWallVertices);
+  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
+  set.bind(cmd, floor, arena);
+  cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
+  gpu::drawIndexed(cmd, pool.floorIndexCount);
+}
+
+}  // namespace tp::render

@@ -1,0 +1,97 @@
+#include "render/surfaces.hpp"
+
+#include <array>
+#include <vector>
+
+namespace tp::render {
+
+Samplers::Samplers(const gpu::Context& ctx)
+    : equirect(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
+                                                   .minFilter = vk::Filter::eLinear,
+                                                   .mipmapMode = vk::SamplerMipmapMode::eLinear,
+                                                   .addressModeU = vk::SamplerAddressMode::eRepeat,
+                                                   .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                   .addressModeW = vk::SamplerAddressMode::eClampToEdge,
+                                                   .maxLod = VK_LOD_CLAMP_NONE}),
+      nearest(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
+                                                  .minFilter = vk::Filter::eNearest,
+                                                  .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                  .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                  .addressModeW = vk::SamplerAddressMode::eClampToEdge}),
+      clamp(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear,
+                                                .minFilter = vk::Filter::eLinear,
+                                                .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                .addressModeW = vk::SamplerAddressMode::eClampToEdge}) {}
+
+void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent) {
+  cmd.setViewport(0, vk::Viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f});
+  cmd.setScissor(0, vk::Rect2D{{0, 0}, extent});
+}
+
+vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout layout, vk::AttachmentLoadOp load,
+                                       vk::ClearValue clear) {
+  return vk::RenderingAttachmentInfo{.imageView = *image.view,
+                                     .imageLayout = layout,
+                                     .loadOp = load,
+                                     .storeOp = vk::AttachmentStoreOp::eStore,
+                                     .clearValue = clear};
+}
+
+void attachSurfaces(PassBuilder& pass, const SurfaceTargets& t, bool first) {
+  pass.attach(t.color, Use::ColorReadWrite);
+  pass.attach(t.depth, first ? Use::DepthWrite : Use::DepthReadWrite);
+  if (!t.gbuffer()) return;
+  for (const GraphImage& g : {t.normal, t.ambient}) pass.attach(g, first ? Use::ColorWrite : Use::ColorReadWrite);
+}
+
+void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, bool first,
+                  const std::function<void()>& draw) {
+  const auto load = first ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eLoad;
+  auto gbufferTarget = [&](const GraphImage& target) {
+    return attachment(*target.image, vk::ImageLayout::eColorAttachmentOptimal, load,
+                      vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
+  };
+  std::vector<vk::RenderingAttachmentInfo> colorTargets{
+      attachment(*t.color.image, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad)};
+  if (t.gbuffer()) colorTargets.insert(colorTargets.end(), {gbufferTarget(t.normal), gbufferTarget(t.ambient)});
+  auto depthTarget = attachment(*t.depth.image, vk::ImageLayout::eDepthAttachmentOptimal, load,
+                                vk::ClearValue{.depthStencil = {1.0f, 0}});
+  const vk::Extent2D extent = t.color.image->extent;
+  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
+                                       .layerCount = 1,
+                                       .colorAttachmentCount = uint32_t(colorTargets.size()),
+                                       .pColorAttachments = colorTargets.data(),
+                                       .pDepthAttachment = &depthTarget});
+  setViewport(cmd, extent);
+  draw();
+  cmd.endRendering();
+}
+
+void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
+              const std::function<void()>& draw) {
+  auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+  auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+                                       .layerCount = 1,
+                                       .colorAttachmentCount = 1,
+                                       .pColorAttachments = &colorTarget,
+                                       .pDepthAttachment = &depthTarget});
+  setViewport(cmd, color.extent);
+  draw();
+  cmd.endRendering();
+}
+
+gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
+                                         uint32_t pushSize, bool gbuffer) {
+  const std::string colorOnly = fragmentShader.substr(0, fragmentShader.rfind('.')) + ".color_only.frag";
+  return {.vertexShader = vertexShader,
+          .fragmentShader = gbuffer ? fragmentShader : colorOnly,
+          .pushSize = pushSize,
+          .colorFormats = gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true};
+}
+
+}  // namespace tp::render

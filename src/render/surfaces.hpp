@@ -1,0 +1,69 @@
+#pragma once
+// The frame's targets, and what the graphics passes share: the viewport, an
+// attachment stored after the pass, the opaque surfaces' framing and
+// pipelines, and what every pass may read (FrameInputs).
+#include <functional>
+#include <string>
+
+#include "gpu/context.hpp"
+#include "gpu/pipeline.hpp"
+#include "graph/frame_graph.hpp"
+
+namespace tp::render {
+
+constexpr vk::Format kHdrFormat = vk::Format::eR32G32B32A32Sfloat;
+constexpr vk::Format kLdrFormat = vk::Format::eR8G8B8A8Unorm;
+constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+constexpr vk::Format kSkyFormat = vk::Format::eR16G16B16A16Sfloat;
+constexpr vk::Format kAovFormat = vk::Format::eR32G32B32A32Sfloat;
+constexpr vk::Format kGbufferFormat = vk::Format::eR16G16B16A16Sfloat;  // view normal, ambient radiance
+constexpr vk::Format kAoFormat = vk::Format::eR32Sfloat;
+
+// What the opaque surfaces (ground, pool, objects) draw into: colour and
+// depth, and, when something reads it (SSAO), the G-buffer beside them: the
+// view-space normal and the ambient part of the colour. Without it the
+// surfaces draw with their shaders' colour-only variants.
+struct SurfaceTargets {
+  GraphImage color, depth, normal, ambient;
+  bool gbuffer() const { return bool(normal); }
+};
+
+// What the passes of every feature may read, made before any of them.
+struct FrameInputs {
+  GraphBuffer uniforms;  // the frame's uniforms, filled by the host before each frame
+  GraphImage sky;        // the equirectangular sky
+  GraphImage glossy;     // the glossy environment (shared/glossy.h), or one black texel
+  GraphBuffer medium;    // the medium around the camera (camera_medium.comp), or air
+  vk::Sampler equirect;  // around in u, clamped at the poles, through every mip level
+  vk::Sampler nearest;   // texel fetches
+  vk::Sampler clamp;     // linear, clamped
+};
+
+// The frame's samplers (FrameInputs'), made once.
+struct Samplers {
+  explicit Samplers(const gpu::Context& ctx);
+  vk::raii::Sampler equirect, nearest, clamp;
+};
+
+void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
+vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout layout, vk::AttachmentLoadOp load,
+                                       vk::ClearValue clear = {});
+
+// A surface pass's attachments, declared: colour drawn over, depth and the
+// G-buffer cleared by the first surface pass (`first`) and drawn over by the rest.
+void attachSurfaces(PassBuilder& pass, const SurfaceTargets& targets, bool first);
+// Renders over the surface targets (as attachSurfaces declared them; zero
+// ambient where the first pass clears: AO takes nothing from pixels no
+// surface covers).
+void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& targets, bool first,
+                  const std::function<void()>& draw);
+// Renders over what colour and depth already hold (both loaded and stored).
+void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
+              const std::function<void()>& draw);
+
+// A pipeline of an opaque surface: colour, the two G-buffer targets (or,
+// without them, the fragment shader's colour-only variant), depth.
+gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
+                                         uint32_t pushSize, bool gbuffer);
+
+}  // namespace tp::render

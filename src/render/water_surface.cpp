@@ -1,0 +1,94 @@
+#include "render/water_surface.hpp"
+
+#include "gpu/commands.hpp"
+#include "gpu/transfer.hpp"
+#include "render/pass_kinds.hpp"
+#include "shading/water_model.hpp"
+
+namespace tp::render {
+namespace {
+
+// One side of the water mesh, the other side culled.
+gpu::GraphicsPipelineDesc waterSide(const char* fragmentShader, vk::CullModeFlags cull) {
+  return {.vertexShader = "water_surface.vert",
+          .fragmentShader = fragmentShader,
+          .pushSize = sizeof(shader::WaterSurfaceParams),
+          .colorFormats = {kHdrFormat},
+          .depthFormat = kDepthFormat,
+          .depthTest = true,
+          .depthWrite = true,
+          .topology = vk::PrimitiveTopology::eTriangleStrip,
+          .cullMode = cull};
+}
+
+bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
+
+}  // namespace
+
+WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
+                           sim::GpuStepper& stepper, vk::Extent2D frame)
+    : above_(gpu::createGraphicsPipeline(
+          ctx, waterSide(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+                         vk::CullModeFlagBits::eBack))),
+      below_(gpu::createGraphicsPipeline(ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront))) {
+  const auto gridIndices = waterGridStrips(scene.water.grid);
+  indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
+                                     "water grid indices");
+  const ResourceRef state0 = graph.buffer("water state 0", stepper.buffer(0)).ref;
+  const ResourceRef state1 = graph.buffer("water state 1", stepper.buffer(1)).ref;
+  draw_ = WaterDraw{{{state0, state1}, [&stepper]() -> const gpu::Buffer& { return stepper.current(); }},
+                    &indices_,
+                    uint32_t(gridIndices.size()),
+                    waterSurfaceParams(scene)};
+  if (apparentDepth(scene)) {
+    underwater_ =
+        gpu::createImage2D(ctx, frame, kHdrFormat,
+                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, "underwater image");
+    underwaterRef_ = graph.image("underwater", underwater_);
+  }
+}
+
+void WaterSurface::declareUnderwater(FrameGraph& graph, const GraphImage& color) const {
+  if (!underwaterRef_) return;
+  graph.pass(passes::kUnderwater, [this, color](PassBuilder& pass) {
+    const gpu::Image& from = pass.attach(color, Use::TransferRead);
+    const gpu::Image& to = pass.attach(*underwaterRef_, Use::TransferWrite);
+    return [&from, &to](PassContext& pc) {
+      pc.cmd.copyImage(from.handle(), vk::ImageLayout::eTransferSrcOptimal, to.handle(),
+                       vk::ImageLayout::eTransferDstOptimal,
+                       vk::ImageCopy{.srcSubresource = {from.aspect, 0, 0, 1},
+                                     .dstSubresource = {to.aspect, 0, 0, 1},
+                                     .extent = {from.extent.width, from.extent.height, 1}});
+    };
+  });
+}
+
+void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, const PoolDraw& pool,
+                           const FrameInputs& in) const {
+  graph.pass(passes::kWater, [this, targets, pool, in](PassBuilder& pass) {
+    const gpu::Image& color = pass.attach(targets.color, Use::ColorReadWrite);
+    const gpu::Image& depth = pass.attach(targets.depth, Use::DepthReadWrite);
+    Bindings& set = pass.bindings()
+                        .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
+                        .storageBuffer(2, draw_.state, Use::VertexStorageRead)
+                        .constantBuffer(3, *pool.uniforms)
+                        .constantBuffer(4, *pool.objects);
+    if (underwaterRef_) set.sampledImage(5, *underwaterRef_, in.nearest, Use::FragmentSample);
+    // The floor the refracted (or, from below, reflected) rays meet, and the
+    // glossy walls and spheres they meet.
+    set.sampledImage(6, pool.caustics, in.clamp, Use::FragmentSample)
+        .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample);
+    return [this, &color, &depth, &set](PassContext& pc) {
+      drawOver(pc.cmd, color, depth, [&] {
+        for (const gpu::Pipeline* side : {&above_, &below_}) {
+          gpu::bindPipeline(pc.cmd, *side, draw_.params);
+          set.bind(pc.cmd, *side, pc.descriptors);
+          drawWater(pc.cmd, draw_);
+        }
+      });
+    };
+  });
+}
+
+}  // namespace tp::render

@@ -1,0 +1,34 @@
+#pragma once
+// The simulated water's surface, drawn straight from the simulation's state
+// buffer over the frame: its front faces (seen from above) reflect the sky and
+// refract the pool in the scene's refraction mode, its back faces (seen from
+// below) reflect the pool and refract the sky. The apparent-depth mode reads
+// the frame's image of the pool, copied before the water is drawn.
+#include <optional>
+
+#include "render/pool.hpp"
+#include "render/surfaces.hpp"
+#include "render/water_draw.hpp"
+#include "scene/scene.hpp"
+#include "sim/gpu_stepper.hpp"
+
+namespace tp::render {
+
+class WaterSurface {
+ public:
+  WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, sim::GpuStepper& stepper,
+               vk::Extent2D frame);
+  const WaterDraw& draw() const { return draw_; }
+  // The copy of the pool under the water, for the apparent-depth mode (else nothing).
+  void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const PoolDraw& pool, const FrameInputs& in) const;
+
+ private:
+  gpu::Buffer indices_;
+  WaterDraw draw_;
+  gpu::Pipeline above_, below_;
+  gpu::Image underwater_;
+  std::optional<GraphImage> underwaterRef_;  // the apparent-depth mode's
+};
+
+}  // namespace tp::render

@@ -1,0 +1,145 @@
+#include "shading/water_model.hpp"
+
+#include <algorithm>
+
+#include "shading/objects_model.hpp"
+#include "shading/pool_model.hpp"
+
+namespace tp::render {
+
+std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent) {
+  const int64_t n = water.n;
+  const float h = extent / float(n);
+  auto u = [&](int64_t i, int64_t j) {
+    return water.u[size_t(std::clamp<int64_t>(j, 0, n - 1) * n + std::clamp<int64_t>(i, 0, n - 1))];
+  };
+  std::vector<glm::vec3> normals(size_t(n * n));
+  for (int64_t j = 0; j < n; ++j) {
+    for (int64_t i = 0; i < n; ++i) {
+      const float dx = float(std::min(i + 1, n - 1) - std::max<int64_t>(i - 1, 0)) * h;
+      const float dz = float(std::min(j + 1, n - 1) - std::max<int64_t>(j - 1, 0)) * h;
+      const float dudx = float(u(i + 1, j) - u(i - 1, j)) / dx, dudz = float(u(i, j + 1) - u(i, j - 1)) / dz;
+      normals[size_t(j * n + i)] = glm::normalize(glm::vec3(-dudx, 1.0f, -dudz));
+    }
+  }
+  return normals;
+}
+
+std::vector<uint32_t> waterGridStrips(uint32_t n) {
+  std::vector<uint32_t> indices;
+  indices.reserve(size_t(n - 1) * (2 * n + 1));
+  for (uint32_t j = 0; j + 1 < n; ++j) {
+    // a0 c0 a1 c1 ...: strip triangle 2i is (a, c, b) and 2i+1 (b, c, d), as in the list.
+    for (uint32_t i = 0; i < n; ++i) indices.insert(indices.end(), {j * n + i, (j + 1) * n + i});
+    indices.push_back(kStripRestart);
+  }
+  return indices;
+}
+
+std::vector<uint32_t> waterGridIndices(uint32_t n) {
+  std::vector<uint32_t> indices;
+  indices.reserve(size_t(n - 1) * (n - 1) * 6);
+  for (uint32_t j = 0; j + 1 < n; ++j) {
+    for (uint32_t i = 0; i + 1 < n; ++i) {
+      const uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      indices.insert(indices.end(), {a, c, b, b, c, d});
+    }
+  }
+  return indices;
+}
+
+shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene) {
+  const scene::Water& w = scene.water;
+  return shader::WaterSurfaceParams{
+      .placement = {-0.5f * w.extent, w.level, -0.5f * w.extent, w.extent / float(w.grid)},
+      .absorption = glm::vec4(w.absorption, w.ior),
+      .grid = {w.grid, 0u, 0u, 0u},
+  };
+}
+
+shader::GroundParams groundParams(const scene::Scene& scene) {
+  const scene::Ground& g = scene.ground;
+  return {.plane = {g.halfExtent, g.height, g.checkerSize, hasPool(scene) ? 0.5f * scene.water.extent : 0.0f},
+          .albedoA = glm::vec4(g.albedoA, 0.0f),
+          .albedoB = glm::vec4(g.albedoB, 0.0f)};
+}
+
+namespace {
+
+// Appends the quad a, b, c, d (counter-clockwise seen from its front) to a mesh.
+void addQuad(scene::Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+  const uint32_t base = uint32_t(m.positions.size());
+  m.positions.insert(m.positions.end(), {a, b, c, d});
+  m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+}  // namespace
+
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water, float time) {
+  std::vector<scene::Mesh> meshes;
+  const shader::GroundParams g = groundParams(scene);
+  const float e = g.plane.x, y = g.plane.y, hole = g.plane.w;
+  // As ground.vert draws it: four trapezoids between the outer square and the hole.
+  scene::Mesh ground{"ground", {}, {}};
+  const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec2 o0 = corners[k] * e, o1 = corners[(k + 1) % 4] * e;
+    const glm::vec2 i0 = corners[k] * hole, i1 = corners[(k + 1) % 4] * hole;
+    addQuad(ground, {o0.x, y, o0.y}, {i0.x, y, i0.y}, {i1.x, y, i1.y}, {o1.x, y, o1.y});
+  }
+  meshes.push_back(std::move(ground));
+  if (hasPool(scene)) {
+    const shader::PoolParams p = poolParams(scene);
+    const float s = p.box.x, top = p.box.y, bottom = shader::poolBottom(p);
+    scene::Mesh walls{"pool_walls", {}, {}};
+    addQuad(walls, {-s, top, -s}, {-s, bottom, -s}, {s, bottom, -s}, {s, top, -s});
+    addQuad(walls, {s, top, -s}, {s, bottom, -s}, {s, bottom, s}, {s, top, s});
+    addQuad(walls, {s, top, s}, {s, bottom, s}, {-s, bottom, s}, {-s, top, s});
+    addQuad(walls, {-s, top, s}, {-s, bottom, s}, {-s, bottom, -s}, {-s, top, -s});
+    meshes.push_back(std::move(walls));
+    // As pool_floor.vert draws it: the same grid and the same height function, bit for bit.
+    scene::Mesh floor{"pool_floor", {}, waterGridIndices(kPoolFloorGrid)};
+    for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
+      for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
+        const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
+        const glm::vec2 xz = (uv * 2.0f - 1.0f) * s;
+        floor.positions.push_back({xz.x, shader::poolFloorHeight(p, xz), xz.y});
+      }
+    }
+    meshes.push_back(std::move(floor));
+  }
+  const scene::Scene placed = scene::sceneAt(scene, time);
+  for (size_t i = 0; i < placed.spheres.size(); ++i)
+    meshes.push_back(sphereMesh(placed.spheres[i], "sphere" + std::to_string(i)));
+  for (size_t i = 0; i < placed.boxes.size(); ++i)
+    meshes.push_back(boxMesh(placed.boxes[i], "box" + std::to_string(i)));
+  if (water) {
+    const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+    const auto cells = sim::toCells(*water, scene.water.extent);
+    scene::Mesh surface{"water", {}, waterGridIndices(water->n)};
+    surface.positions.reserve(cells.size());
+    for (const auto& c : cells)
+      surface.positions.push_back({p.placement.x + c.x, p.placement.y + c.u, p.placement.z + c.z});
+    meshes.push_back(std::move(surface));
+  }
+  return meshes;
+}
+
+bool cameraOverWater(const scene::Scene& scene) {
+  const glm::vec3 c = scene.camera.position;
+  return shader::overWaterSquare(waterSurfaceParams(scene), glm::vec2(c.x, c.z));
+}
+
+shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water) {
+  if (!water) return {glm::vec4(0.0f)};
+  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+  const glm::vec3 camera = scene.camera.position;
+  const glm::vec4 quad = shader::gridQuadAt(p, glm::vec2(camera.x, camera.z));
+  const auto u = [&](uint32_t i, uint32_t j) { return water->u[size_t(j) * water->n + i]; };
+  const uint32_t i = uint32_t(quad.x), j = uint32_t(quad.y);
+  const glm::vec4 corners(u(i, j), u(i + 1, j), u(i, j + 1), u(i + 1, j + 1));
+  const bool under = shader::underWaterSurface(p, camera, corners, glm::vec2(quad.z, quad.w));
+  return {under ? glm::vec4(glm::vec3(p.absorption), 1.0f) : glm::vec4(0.0f)};
+}
+
+}  // namespace tp::render

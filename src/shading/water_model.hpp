@@ -1,0 +1,43 @@
+#pragma once
+#include <vector>
+
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+#include "shared/ground.h"
+#include "shared/water_surface.h"
+#include "sim/water_scene.hpp"
+#include "sim/water_state.hpp"
+
+namespace tp::render {
+
+// Two triangles per grid quad, counter-clockwise seen from above.
+std::vector<uint32_t> waterGridIndices(uint32_t n);
+// The same triangles, in the same order with the same corners first, as one
+// triangle strip per row of quads, rows separated by kStripRestart: a third of
+// the indices, so a third of the vertex shader invocations where the device
+// shades each index (lavapipe: on one thread, the cost of a mesh pass that
+// does not shrink with the frame).
+inline constexpr uint32_t kStripRestart = 0xFFFFFFFFu;
+std::vector<uint32_t> waterGridStrips(uint32_t n);
+shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
+// The ground's push constants, with the pool's hole when there is a pool.
+shader::GroundParams groundParams(const scene::Scene& scene);
+
+// Unit normals of the surface's vertices from central differences of u, one
+// sided at the edges: the normals water_surface.vert computes.
+std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent);
+
+// Whether the camera is over the water's square (and so may be under its
+// surface); elsewhere the medium around it is air whatever the water does.
+bool cameraOverWater(const scene::Scene& scene);
+
+// The medium around the camera given the water's state (none: air), as
+// camera_medium.comp decides it on the GPU.
+shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water);
+
+// The triangles a frame shows, in world space: the ground around the pool's
+// hole, the pool's walls and floor, the objects, and, given its state, the water
+// surface.
+std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::WaterState* water, float time);
+
+}  // namespace tp::render

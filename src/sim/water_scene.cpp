@@ -1,0 +1,84 @@
+#include "sim/water_scene.hpp"
+
+#include "gpu/submit.hpp"
+#include "sim/water_timeline.hpp"
+
+namespace tp::sim {
+
+WaterParams waterParams(const scene::Water& w) {
+  return WaterParams{.n = w.grid,
+                     .extent = w.extent,
+                     .waveSpeed = w.waveSpeed,
+                     .damping = w.damping,
+                     .boundary = parseBoundary(w.boundary),
+                     .maxSlope = w.maxSlope};
+}
+
+void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, const scene::Scene& scene, double start,
+                      uint64_t count) {
+  const double dt = waterStep(scene.water);
+  bool moving = false;
+  for (const auto& sphere : scene.spheres) moving |= !sphere.path.empty();
+  if (!moving) {
+    water.recordSteps(cmd, count, dt);
+    return;
+  }
+  for (uint64_t step = 0; step < count; ++step) {
+    const float t0 = float(start + double(step) * dt), t1 = float(start + double(step + 1) * dt);
+    for (const auto& sphere : scene.spheres) {
+      if (sphere.path.empty()) continue;
+      water.recordSphereMove(cmd, worldToGrid(scene.water, scene::sphereCenterAt(sphere, t0)),
+                             worldToGrid(scene.water, scene::sphereCenterAt(sphere, t1)), sphere.radius,
+                             scene.water.level);
+    }
+    water.recordSteps(cmd, 1, dt);
+  }
+}
+
+WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
+  GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), StepKernel::ActiveTiles);
+  const WaterClock clock{.substeps = waterSubsteps(scene.water)};  // from the start
+  const uint64_t steps = clock.stepsAt(frame);
+  const std::vector<size_t> due = dueDrops(scene.water, clock, 0, steps, {});
+  gpu::submitAndWait(
+      ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterRun(cmd, stepper, scene, clock, 0, steps, due); },
+      "water simulation");
+  return stepper.download();
+}
+
+glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {
+  return {p.x + 0.5f * w.extent, p.y, p.z + 0.5f * w.extent};
+}
+
+scene::Water withDynamicsOf(scene::Water water, const scene::Water& from) {
+  water.waveSpeed = from.waveSpeed;
+  water.damping = from.damping;
+  water.boundary = from.boundary;
+  water.maxSlope = from.maxSlope;
+  return water;
+}
+
+bool sameWaterMotion(const scene::Water& a, const scene::Water& b) {
+  scene::Water shading = a;
+  shading.ior = b.ior;
+  shading.absorption = b.absorption;
+  return shading == b;
+}
+
+uint32_t waterSubsteps(const scene::Water& w) { return substepsFor(waterParams(w), w.frameTime); }
+
+double waterStep(const scene::Water& w) { return double(w.frameTime) / waterSubsteps(w); }
+
+WaterState waterInitialState(const scene::Water& w) {
+  const WaterParams p = waterParams(w);
+  WaterState s = flatState(w.grid);
+  for (const scene::Drop& d : w.drops) {
+    if (d.frame != 0) continue;  // a later drop comes on its frame (water_timeline.hpp)
+    const glm::vec3 centre = worldToGrid(w, {d.x, 0.0f, d.z});
+    addDrop(s, w.extent, centre.x, centre.z, d.radius, d.amplitude);
+  }
+  startAtRest(s, p, waterStep(w));
+  return s;
+}
+
+}  // namespace tp::sim
