@@ -29,8 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Synopsis {
-  std::string where;  // "docs/rendering.md:8", for messages
-  std::string command;  // "render", "bench water"
+  std::string where;              // "docs/rendering.md:8", for messages
+  std::string command;            // "render", "bench water"
   std::set<std::string> options;  // "--scene", "--width", ...
 };
 
@@ -59,7 +59,9 @@ bool isFence(const std::string& line) {
 
 // The line with up to `indent` leading spaces taken off (a fence inside a list
 // item is indented, and so are the lines of its block).
-std::string unindent(const std::string& line, size_t indent) { return line.substr(std::min(indent, leadingSpaces(line))); }
+std::string unindent(const std::string& line, size_t indent) {
+  return line.substr(std::min(indent, leadingSpaces(line)));
+}
 
 bool isOptionChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-'; }
 
@@ -178,7 +180,7 @@ std::vector<std::string> helpSubcommands(const std::string& help) {
       continue;
     }
     if (line.empty() || line.front() != ' ') break;  // the end of the list
-    if (leadingSpaces(line) != 2) continue;  // a description carried onto its own line
+    if (leadingSpaces(line) != 2) continue;          // a description carried onto its own line
     std::istringstream words(line);
     std::string name;
     words >> name;
@@ -199,7 +201,7 @@ TEST(DocsSynopsis, OptionsWrittenAreTheOptionsTheProgramTakes) {
   ASSERT_FALSE(synopses.empty()) << "no synopsis found in README.md or docs/";
 
   std::map<std::string, std::set<std::string>> written;  // command -> options in any of its synopses
-  std::map<std::string, std::set<std::string>> listed;  // command -> options its --help lists
+  std::map<std::string, std::set<std::string>> listed;   // command -> options its --help lists
   for (const Synopsis& s : synopses) {
     ASSERT_FALSE(s.command.empty()) << s.where << ": a synopsis that names no command";
     written[s.command].insert(s.options.begin(), s.options.end());
@@ -218,8 +220,8 @@ TEST(DocsSynopsis, OptionsWrittenAreTheOptionsTheProgramTakes) {
   for (const auto& [command, options] : listed) {
     for (const std::string& option : options) {
       EXPECT_EQ(written[command].count(option), 1u)
-          << "`tidepool " << command << " --help` lists " << option
-          << ", which no synopsis of `tidepool " << command << "` in README.md or docs/ writes";
+          << "`tidepool " << command << " --help` lists " << option << ", which no synopsis of `tidepool " << command
+          << "` in README.md or docs/ writes";
     }
   }
 }
@@ -233,7 +235,8 @@ TEST(DocsSynopsis, EveryCommandHasASynopsis) {
   ASSERT_EQ(top.exitCode, 0) << top.err;
   const std::vector<std::string> commands = helpSubcommands(top.out);
   ASSERT_NE(std::find(commands.begin(), commands.end(), "render"), commands.end())
-      << "no subcommands read from `tidepool --help`:\n" << top.out;
+      << "no subcommands read from `tidepool --help`:\n"
+      << top.out;
   for (const std::string& command : commands) {
     const ProcessResult help = runTidepool(command + " --help", dir);
     ASSERT_EQ(help.exitCode, 0) << command << ": " << help.err;

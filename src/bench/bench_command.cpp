@@ -4,146 +4,174 @@
 
 namespace tp::app {
 
-CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
-  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time against error, as a table, CSV and a plot");
-  bench->require_subcommand(1);
+namespace {
+
+// The CSV and plot outputs every benchmark writes.
+void addOutputOptions(CLI::App* cmd, std::string& csv, std::string& plot) {
+  cmd->add_option("--csv", csv, "CSV output")->type_name("PATH")->capture_default_str();
+  cmd->add_option("--plot", plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+}
+
+void addSimBench(CLI::App* bench, BenchSimOptions& o) {
   CLI::App* sim = bench->add_subcommand(
       "sim", "Water stepper: GPU (one step per dispatch, tiled) against an OpenMP C++ loop, cells/s and error");
-  sim->add_option("--sizes", o.sim.sizes, "Grid sides to measure")
+  sim->add_option("--sizes", o.sizes, "Grid sides to measure")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(16u, 8192u));
-  sim->add_option("--csv", o.sim.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  sim->add_option("--plot", o.sim.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  sim->add_option("--min-time", o.sim.minTime, "Seconds measured per case")
+  addOutputOptions(sim, o.csv, o.plot);
+  sim->add_option("--min-time", o.minTime, "Seconds measured per case")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 60.0));
-  addGpuOptions(sim, o.sim.validate, o.sim.device);
+  addGpuOptions(sim, o.validate, o.device);
+}
+
+void addTilesBench(CLI::App* bench, BenchTilesOptions& o) {
   CLI::App* tiles = bench->add_subcommand("tiles",
                                           "Water stepper on active tiles: ms per step over all tiles, over the active "
                                           "list and with the one-step kernel, against the fraction of tiles active");
-  tiles->add_option("--sizes", o.tiles.sizes, "Grid sides to measure")
+  tiles->add_option("--sizes", o.sizes, "Grid sides to measure")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(16u, 8192u));
-  tiles->add_option("--radii", o.tiles.radii, "Drop radii as fractions of the side (0: calm water)")
+  tiles->add_option("--radii", o.radii, "Drop radii as fractions of the side (0: calm water)")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(0.0, 2.0));
-  tiles->add_option("--steps", o.tiles.steps, "Steps per timed submission, right after the drop")
+  tiles->add_option("--steps", o.steps, "Steps per timed submission, right after the drop")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  tiles->add_option("--repeats", o.tiles.repeats, "Timed submissions per case; the median is reported")
+  tiles->add_option("--repeats", o.repeats, "Timed submissions per case; the median is reported")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  tiles->add_option("--csv", o.tiles.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  tiles->add_option("--plot", o.tiles.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  addGpuOptions(tiles, o.tiles.validate, o.tiles.device);
+  addOutputOptions(tiles, o.csv, o.plot);
+  addGpuOptions(tiles, o.validate, o.device);
+}
+
+void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
   CLI::App* water = bench->add_subcommand(
       "water",
       "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
-  water->add_option("--scene", o.water.scenePath, "Scene file (JSON); default: the built-in scene")
+  water->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  water->add_option("--resolutions", o.water.resolutions, "Image sizes WxH, each side 8 to 4096")
+  water->add_option("--resolutions", o.resolutions, "Image sizes WxH, each side 8 to 4096")
       ->delimiter(',')
       ->capture_default_str();
-  water->add_option("--frame", o.water.frame, "Frame of the water to render")->capture_default_str();
-  water->add_option("--samples", o.water.samples, "Samples per pixel of the reference")
+  water->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
+  water->add_option("--samples", o.samples, "Samples per pixel of the reference")
       ->capture_default_str()
       ->check(CLI::Range(1u, 4096u));
-  water->add_option("--repeats", o.water.repeats, "Timed frames per case; the median is reported")
+  water->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  water->add_option("--csv", o.water.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  water->add_option("--plot", o.water.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  addGpuOptions(water, o.water.validate, o.water.device);
+  addOutputOptions(water, o.csv, o.plot);
+  addGpuOptions(water, o.validate, o.device);
+}
+
+void addSsaoBench(CLI::App* bench, BenchSsaoOptions& o) {
   CLI::App* ssao = bench->add_subcommand(
       "ssao", "SSAO settings and presets on one frame: GPU ms of the AO passes against error from ray-traced AO");
-  ssao->add_option("--scene", o.ssao.scenePath, "Scene file (JSON); default: the built-in scene")
+  ssao->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  ssao->add_option("--resolution", o.ssao.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
-  ssao->add_option("--frame", o.ssao.frame, "Frame of the water to render")->capture_default_str();
-  ssao->add_option("--repeats", o.ssao.repeats, "Timed frames per case; the median is reported")
+  ssao->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  ssao->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
+  ssao->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  ssao->add_option("--csv", o.ssao.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  ssao->add_option("--plot", o.ssao.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  addGpuOptions(ssao, o.ssao.validate, o.ssao.device);
+  addOutputOptions(ssao, o.csv, o.plot);
+  addGpuOptions(ssao, o.validate, o.device);
+}
+
+void addFrameBench(CLI::App* bench, BenchFrameOptions& o) {
   CLI::App* frame = bench->add_subcommand(
       "frame",
       "Scene variants as frame sequences with skipping on and off: GPU ms per frame and the passes, "
       "dispatches, draws and workgroups recorded");
-  frame
-      ->add_option("--scene", o.frame.scenePath,
-                   "Scene file (JSON) the variants start from; default: the built-in scene")
+  frame->add_option("--scene", o.scenePath, "Scene file (JSON) the variants start from; default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  frame->add_option("--resolution", o.frame.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
-  frame->add_option("--frames", o.frame.frames, "Timed frames of each sequence (frames 1..N, after frame 0)")
+  frame->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  frame->add_option("--frames", o.frames, "Timed frames of each sequence (frames 1..N, after frame 0)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 100000u));
-  frame->add_option("--csv", o.frame.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  frame->add_option("--plot", o.frame.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  addGpuOptions(frame, o.frame.validate, o.frame.device);
+  addOutputOptions(frame, o.csv, o.plot);
+  addGpuOptions(frame, o.validate, o.device);
+}
+
+void addIblBench(CLI::App* bench, BenchIblOptions& o) {
   CLI::App* ibl = bench->add_subcommand(
       "ibl",
       "Sky irradiance (SH9) by importance and by uniform sampling, and the glossy prefilter by environment, lobe and "
       "MIS sampling: samples against error against GPU ms");
-  ibl->add_option("--scene", o.ibl.scenePath,
-                  "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
+  ibl->add_option("--scene", o.scenePath, "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  ibl->add_option("--width", o.ibl.width, "Environment texels across (even; height is half)")
+  ibl->add_option("--width", o.width, "Environment texels across (even; height is half)")
       ->capture_default_str()
       ->check(CLI::Range(16u, 8192u));
-  ibl->add_option("--samples", o.ibl.samples, "Sample counts to measure")
+  ibl->add_option("--samples", o.samples, "Sample counts to measure")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(1u, 1u << 22));
-  ibl->add_option("--rotations", o.ibl.rotations, "Independent sample sets per case (errors: RMS over them)")
+  ibl->add_option("--rotations", o.rotations, "Independent sample sets per case (errors: RMS over them)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  ibl->add_option("--repeats", o.ibl.repeats, "Timed CDF builds; the median is reported")
+  ibl->add_option("--repeats", o.repeats, "Timed CDF builds; the median is reported")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  ibl->add_option("--csv", o.ibl.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  ibl->add_option("--plot", o.ibl.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  ibl->add_option("--glossy-samples", o.ibl.glossySamples,
+  addOutputOptions(ibl, o.csv, o.plot);
+  ibl->add_option("--glossy-samples", o.glossySamples,
                   "Glossy prefilter samples per texel to measure (MIS: half from the environment, half from the lobe)")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(2u, 65536u));
-  ibl->add_option("--glossy-csv", o.ibl.glossyCsv, "CSV output of the glossy prefilter")
+  ibl->add_option("--glossy-csv", o.glossyCsv, "CSV output of the glossy prefilter")
       ->type_name("PATH")
       ->capture_default_str();
-  ibl->add_option("--glossy-plot", o.ibl.glossyPlot, "PNG plot of the glossy prefilter (empty: none)")
+  ibl->add_option("--glossy-plot", o.glossyPlot, "PNG plot of the glossy prefilter (empty: none)")
       ->type_name("PATH")
       ->capture_default_str();
-  addGpuOptions(ibl, o.ibl.validate, o.ibl.device);
+  addGpuOptions(ibl, o.validate, o.device);
+}
+
+void addGlassBench(CLI::App* bench, BenchGlassOptions& o) {
   CLI::App* glass = bench->add_subcommand(
       "glass",
       "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");
   glass
-      ->add_option("--scene", o.glass.scenePath,
+      ->add_option("--scene", o.scenePath,
                    "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  glass->add_option("--resolution", o.glass.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
-  glass->add_option("--steps", o.glass.steps, "Binary-search steps to measure, each 1 to 64")
+  glass->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  glass->add_option("--steps", o.steps, "Binary-search steps to measure, each 1 to 64")
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(1u, 64u));
-  glass->add_option("--samples", o.glass.samples, "Samples per pixel of the reference")
+  glass->add_option("--samples", o.samples, "Samples per pixel of the reference")
       ->capture_default_str()
       ->check(CLI::Range(1u, 4096u));
-  glass->add_option("--repeats", o.glass.repeats, "Timed frames per case; the median is reported")
+  glass->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
-  glass->add_option("--csv", o.glass.csv, "CSV output")->type_name("PATH")->capture_default_str();
-  glass->add_option("--plot", o.glass.plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
-  addGpuOptions(glass, o.glass.validate, o.glass.device);
+  addOutputOptions(glass, o.csv, o.plot);
+  addGpuOptions(glass, o.validate, o.device);
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time against error, as a table, CSV and a plot");
+  bench->require_subcommand(1);
+  addSimBench(bench, o.sim);
+  addTilesBench(bench, o.tiles);
+  addWaterBench(bench, o.water);
+  addSsaoBench(bench, o.ssao);
+  addFrameBench(bench, o.frame);
+  addIblBench(bench, o.ibl);
+  addGlassBench(bench, o.glass);
   return bench;
 }
 

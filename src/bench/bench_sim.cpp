@@ -60,27 +60,15 @@ class QuietReporter : public benchmark::BenchmarkReporter {
   void ReportRuns(const std::vector<Run>&) override {}
 };
 
-}  // namespace
+using Results = std::map<std::pair<unsigned, size_t>, Result>;  // per grid side and method
+using Errors = std::map<unsigned, std::pair<double, double>>;   // per grid side: discrete, continuous
 
-int runBenchSim(const BenchSimOptions& o) {
-  checkBenchOutputs(o.csv, o.plot);
-  GpuSession session(o.validate, o.device);
-  const gpu::Context& ctx = session.context();
-  for (unsigned n : o.sizes) {
-    if (n < 16 || n > sim::maxGrid(ctx)) {
-      throw std::runtime_error("bench grid " + std::to_string(n) + " is outside 16.." +
-                               std::to_string(sim::maxGrid(ctx)) + " on " + ctx.deviceName());
-    }
-  }
+// Each method on each grid, timed by Google Benchmark for at least `minTime` seconds.
+Results timeMethods(const gpu::Context& ctx, const std::vector<unsigned>& sizes, const std::vector<Method>& methods,
+                    double minTime) {
+  Results results;
 
-  std::vector<Method> methods{{"gpu one step per dispatch", true, sim::StepKernel::OnePerDispatch, 1},
-                              {"gpu tiled halo 2", true, sim::StepKernel::Tiled, 2},
-                              {"gpu tiled halo 4", true, sim::StepKernel::Tiled, 4},
-                              {"gpu tiled halo 8", true, sim::StepKernel::Tiled, 8},
-                              {"cpu openmp x" + std::to_string(sim::CpuStepper::threads()), false}};
-  std::map<std::pair<unsigned, size_t>, Result> results;
-
-  for (unsigned n : o.sizes) {
+  for (unsigned n : sizes) {
     for (size_t mi = 0; mi < methods.size(); ++mi) {
       const Method m = methods[mi];
       const std::string name = m.name + "/" + std::to_string(n);
@@ -109,20 +97,24 @@ int runBenchSim(const BenchSimOptions& o) {
           }
         }
       });
-      b->UseManualTime()->MinTime(o.minTime)->Unit(benchmark::kMillisecond);
+      b->UseManualTime()->MinTime(minTime)->Unit(benchmark::kMillisecond);
     }
   }
-  std::fprintf(stderr, "bench sim: %zu cases on %s, at least %.2g s each\n", o.sizes.size() * methods.size(),
-               ctx.deviceName().c_str(), o.minTime);
+  std::fprintf(stderr, "bench sim: %zu cases on %s, at least %.2g s each\n", sizes.size() * methods.size(),
+               ctx.deviceName().c_str(), minTime);
   QuietReporter quiet;
   benchmark::RunSpecifiedBenchmarks(&quiet);
   benchmark::ClearRegisteredBenchmarks();
 
-  // Error against the exact discrete and the continuous mode after kErrorTime
-  // seconds (the tiled kernel: bit-identical to the one-step kernel; the CPU
-  // loop differs from both by round-off only).
-  std::map<unsigned, std::pair<double, double>> errors;
-  for (unsigned n : o.sizes) {
+  return results;
+}
+
+// Error against the exact discrete and the continuous mode after kErrorTime
+// seconds (the tiled kernel: bit-identical to the one-step kernel; the CPU
+// loop differs from both by round-off only).
+Errors modeErrors(const gpu::Context& ctx, const std::vector<unsigned>& sizes) {
+  Errors errors;
+  for (unsigned n : sizes) {
     const auto p = paramsFor(n);
     const double dt = dtFor(n);
     const uint64_t steps = uint64_t(std::llround(kErrorTime / dt));
@@ -141,6 +133,12 @@ int runBenchSim(const BenchSimOptions& o) {
                  static_cast<unsigned long long>(steps));
   }
 
+  return errors;
+}
+
+// The table on stdout and the CSV (and its plot).
+void writeTable(const BenchSimOptions& o, const gpu::Context& ctx, const std::vector<Method>& methods,
+                const Results& results, const Errors& errors) {
   base::AtomicFile csvFile(o.csv);
   std::ofstream csv(csvFile.tempPath());
   csv << "grid,method,steps_per_dispatch,ms_per_step,mcells_per_s,speedup_vs_cpu,error_exact_discrete,error_continuous,"
@@ -148,13 +146,13 @@ int runBenchSim(const BenchSimOptions& o) {
   std::printf("%6s  %-28s %10s %12s %9s %14s %14s\n", "grid", "method", "ms/step", "Mcells/s", "vs CPU", "err discrete",
               "err continuous");
   for (unsigned n : o.sizes) {
-    const Result& cpu = results[{n, methods.size() - 1}];
+    const Result& cpu = results.at({n, methods.size() - 1});
     const double cpuRate = double(cpu.steps) * n * n / cpu.seconds;
     for (size_t mi = 0; mi < methods.size(); ++mi) {
-      const Result& r = results[{n, mi}];
+      const Result& r = results.at({n, mi});
       const double msPerStep = 1e3 * r.seconds / double(r.steps);
       const double rate = double(r.steps) * n * n / r.seconds;
-      const auto [discrete, continuous] = errors[n];
+      const auto [discrete, continuous] = errors.at(n);
       std::printf("%6u  %-28s %10.4f %12.1f %8.2fx %14.3g %14.3g\n", n, methods[mi].name.c_str(), msPerStep, rate / 1e6,
                   rate / cpuRate, discrete, continuous);
       csv << n << "," << methods[mi].name << ","
@@ -165,6 +163,29 @@ int runBenchSim(const BenchSimOptions& o) {
     }
   }
   commitBenchCsv(csvFile, csv, "plot_bench_sim.py", o.plot);
+}
+
+}  // namespace
+
+int runBenchSim(const BenchSimOptions& o) {
+  checkBenchOutputs(o.csv, o.plot);
+  GpuSession session(o.validate, o.device);
+  const gpu::Context& ctx = session.context();
+  for (unsigned n : o.sizes) {
+    if (n < 16 || n > sim::maxGrid(ctx)) {
+      throw std::runtime_error("bench grid " + std::to_string(n) + " is outside 16.." +
+                               std::to_string(sim::maxGrid(ctx)) + " on " + ctx.deviceName());
+    }
+  }
+
+  std::vector<Method> methods{{"gpu one step per dispatch", true, sim::StepKernel::OnePerDispatch, 1},
+                              {"gpu tiled halo 2", true, sim::StepKernel::Tiled, 2},
+                              {"gpu tiled halo 4", true, sim::StepKernel::Tiled, 4},
+                              {"gpu tiled halo 8", true, sim::StepKernel::Tiled, 8},
+                              {"cpu openmp x" + std::to_string(sim::CpuStepper::threads()), false}};
+  const Results results = timeMethods(ctx, o.sizes, methods, o.minTime);
+  const Errors errors = modeErrors(ctx, o.sizes);
+  writeTable(o, ctx, methods, results, errors);
   return session.finish();
 }
 

@@ -57,6 +57,39 @@ struct Measured {
   bool pareto = false;
 };
 
+// The AO's error against the reference where the frame has a surface.
+void measureError(const render::RenderedFrame& frame, const std::vector<float>& reference, Measured& m) {
+  double sum = 0.0, squares = 0.0, occludedSum = 0.0;
+  size_t pixels = 0;
+  for (size_t k = 0; k < reference.size(); ++k) {
+    if (frame.gbufferDepth[k] >= 1.0f) continue;  // no surface: both 1
+    const double e = std::abs(double(frame.ao[k]) - reference[k]);
+    sum += e;
+    squares += e * e;
+    m.worst = std::max(m.worst, e);
+    ++pixels;
+    if (reference[k] < kOccluded) {
+      occludedSum += e;
+      ++m.occludedPixels;
+    }
+  }
+  m.maeOccluded = m.occludedPixels ? occludedSum / double(m.occludedPixels) : std::nan("");
+  m.mae = pixels ? sum / double(pixels) : std::nan("");
+  m.rmse = pixels ? std::sqrt(squares / double(pixels)) : std::nan("");
+}
+
+// Pareto front: no other case is both faster and more accurate.
+void markParetoFront(std::vector<Measured>& results) {
+  for (size_t c = 0; c < results.size(); ++c) {
+    results[c].pareto = true;
+    for (size_t d = 0; d < results.size(); ++d) {
+      const bool better = results[d].aoMs <= results[c].aoMs && results[d].mae <= results[c].mae &&
+                          (results[d].aoMs < results[c].aoMs || results[d].mae < results[c].mae);
+      if (better) results[c].pareto = false;
+    }
+  }
+}
+
 }  // namespace
 
 int runBenchSsao(const BenchSsaoOptions& o) {
@@ -97,34 +130,10 @@ int runBenchSsao(const BenchSsaoOptions& o) {
     Measured& m = results[c];
     m.aoMs = t.groups[0];
     m.frameMs = t.frame;
-    double sum = 0.0, squares = 0.0, occludedSum = 0.0;
-    size_t pixels = 0;
-    for (size_t k = 0; k < reference.size(); ++k) {
-      if (frame.gbufferDepth[k] >= 1.0f) continue;  // no surface: both 1
-      const double e = std::abs(double(frame.ao[k]) - reference[k]);
-      sum += e;
-      squares += e * e;
-      m.worst = std::max(m.worst, e);
-      ++pixels;
-      if (reference[k] < kOccluded) {
-        occludedSum += e;
-        ++m.occludedPixels;
-      }
-    }
-    m.maeOccluded = m.occludedPixels ? occludedSum / double(m.occludedPixels) : std::nan("");
-    m.mae = pixels ? sum / double(pixels) : std::nan("");
-    m.rmse = pixels ? std::sqrt(squares / double(pixels)) : std::nan("");
+    measureError(frame, reference, m);
     std::fprintf(stderr, "bench ssao: %zu/%zu %s\n", c + 1, cases.size(), cases[c].name.c_str());
   }
-  // Pareto front: no other case is both faster and more accurate.
-  for (size_t c = 0; c < cases.size(); ++c) {
-    results[c].pareto = true;
-    for (size_t d = 0; d < cases.size(); ++d) {
-      const bool better = results[d].aoMs <= results[c].aoMs && results[d].mae <= results[c].mae &&
-                          (results[d].aoMs < results[c].aoMs || results[d].mae < results[c].mae);
-      if (better) results[c].pareto = false;
-    }
-  }
+  markParetoFront(results);
 
   base::AtomicFile csvFile(o.csv);
   std::ofstream csv(csvFile.tempPath());

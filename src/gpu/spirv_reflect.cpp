@@ -89,6 +89,81 @@ vk::DescriptorType descriptorType(const std::vector<Id>& ids, const Id& variable
                            " has a descriptor kind tidepool does not bind");
 }
 
+// What the types, constants, decorations and variables of one instruction
+// say of its ids.
+void recordId(std::vector<Id>& ids, uint32_t opcode, const uint32_t* w, uint32_t count) {
+  auto checkId = [&](uint32_t id) {
+    if (id >= ids.size()) throw std::runtime_error("SPIR-V id out of bounds");
+    return id;
+  };
+  switch (opcode) {
+    case OpConstant:
+    case OpSpecConstant:
+      if (count >= 4) ids[checkId(w[2])].constant = w[3];
+      break;
+    case OpDecorate: {
+      Id& id = ids[checkId(w[1])];
+      if (w[2] == kDecorationBinding && count >= 4) id.binding = w[3];
+      if (w[2] == kDecorationDescriptorSet && count >= 4) id.set = w[3];
+      if (w[2] == kDecorationBlock) id.block = true;
+      if (w[2] == kDecorationBufferBlock) id.bufferBlock = true;
+      break;
+    }
+    case OpTypeStruct:
+    case OpTypeSampler:
+      ids[checkId(w[1])].opcode = opcode;
+      break;
+    case OpTypeImage: {
+      Id& id = ids[checkId(w[1])];
+      id.opcode = opcode;
+      id.imageDim = w[3];
+      id.imageSampled = w[7];
+      break;
+    }
+    case OpTypeSampledImage:
+    case OpTypeArray:
+    case OpTypeRuntimeArray: {
+      Id& id = ids[checkId(w[1])];
+      id.opcode = opcode;
+      id.typeId = checkId(w[2]);
+      break;
+    }
+    case OpTypePointer: {
+      Id& id = ids[checkId(w[1])];
+      id.opcode = opcode;
+      id.storageClass = w[2];
+      id.typeId = checkId(w[3]);
+      break;
+    }
+    case OpVariable: {
+      Id& id = ids[checkId(w[2])];
+      id.opcode = opcode;
+      id.typeId = checkId(w[1]);
+      id.storageClass = w[3];
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+// The module's descriptor bindings (set 0) and whether it has push constants.
+void collectBindings(const std::vector<Id>& ids, ShaderReflection& out) {
+  for (const Id& id : ids) {
+    if (id.opcode != OpVariable) continue;
+    if (id.storageClass == PushConstant) {
+      out.pushConstants = true;
+      continue;
+    }
+    if (id.storageClass != UniformConstant && id.storageClass != Uniform && id.storageClass != StorageBuffer) continue;
+    if (id.binding == ~0u) continue;
+    if (id.set != 0)
+      throw std::runtime_error("SPIR-V binding in descriptor set " + std::to_string(id.set) +
+                               "; tidepool uses set 0 only");
+    out.bindings.push_back({id.binding, descriptorType(ids, id)});
+  }
+}
+
 }  // namespace
 
 ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
@@ -121,52 +196,8 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
         if (w[2] == kExecutionModeLocalSizeId && count >= 6)
           localSizeIds = {checkId(w[3]), checkId(w[4]), checkId(w[5])};
         break;
-      case OpConstant:
-      case OpSpecConstant:
-        if (count >= 4) ids[checkId(w[2])].constant = w[3];
-        break;
-      case OpDecorate: {
-        Id& id = ids[checkId(w[1])];
-        if (w[2] == kDecorationBinding && count >= 4) id.binding = w[3];
-        if (w[2] == kDecorationDescriptorSet && count >= 4) id.set = w[3];
-        if (w[2] == kDecorationBlock) id.block = true;
-        if (w[2] == kDecorationBufferBlock) id.bufferBlock = true;
-        break;
-      }
-      case OpTypeStruct:
-      case OpTypeSampler:
-        ids[checkId(w[1])].opcode = opcode;
-        break;
-      case OpTypeImage: {
-        Id& id = ids[checkId(w[1])];
-        id.opcode = opcode;
-        id.imageDim = w[3];
-        id.imageSampled = w[7];
-        break;
-      }
-      case OpTypeSampledImage:
-      case OpTypeArray:
-      case OpTypeRuntimeArray: {
-        Id& id = ids[checkId(w[1])];
-        id.opcode = opcode;
-        id.typeId = checkId(w[2]);
-        break;
-      }
-      case OpTypePointer: {
-        Id& id = ids[checkId(w[1])];
-        id.opcode = opcode;
-        id.storageClass = w[2];
-        id.typeId = checkId(w[3]);
-        break;
-      }
-      case OpVariable: {
-        Id& id = ids[checkId(w[2])];
-        id.opcode = opcode;
-        id.typeId = checkId(w[1]);
-        id.storageClass = w[3];
-        break;
-      }
       default:
+        recordId(ids, opcode, w, count);
         break;
     }
     at += count;
@@ -176,19 +207,7 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> code) {
     for (int i = 0; i < 3; ++i) out.localSize[i] = ids[(*localSizeIds)[i]].constant;
   }
 
-  for (const Id& id : ids) {
-    if (id.opcode != OpVariable) continue;
-    if (id.storageClass == PushConstant) {
-      out.pushConstants = true;
-      continue;
-    }
-    if (id.storageClass != UniformConstant && id.storageClass != Uniform && id.storageClass != StorageBuffer) continue;
-    if (id.binding == ~0u) continue;
-    if (id.set != 0)
-      throw std::runtime_error("SPIR-V binding in descriptor set " + std::to_string(id.set) +
-                               "; tidepool uses set 0 only");
-    out.bindings.push_back({id.binding, descriptorType(ids, id)});
-  }
+  collectBindings(ids, out);
   std::sort(out.bindings.begin(), out.bindings.end(),
             [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
   return out;

@@ -85,11 +85,10 @@ glm::vec3 sphereCenterAt(const Sphere& sphere, float t) {
   return path.back().center;
 }
 
-void validateScene(const Scene& s) {
-  requireFinite(s.camera.position, "camera.position");
-  requireFinite(s.camera.target, "camera.target");
-  requireFinite(s.camera.up, "camera.up");
-  validateCamera(s.camera);
+namespace {
+
+// validateScene's parts, one object of the file each, in the order it checks them.
+void validateSky(const Scene& s) {
   requireRange(s.sky.sunElevationDegrees, -90.0f, 90.0f, "sky.sun_elevation");
   requireRange(s.sky.sunAzimuthDegrees, -360.0f, 360.0f, "sky.sun_azimuth");
   requireRange(s.sky.sunAngularRadiusDegrees, 0.01f, 45.0f, "sky.sun_angular_radius");
@@ -109,14 +108,23 @@ void validateScene(const Scene& s) {
   requireRange(c.persistence, 0.0f, 1.0f, "sky.clouds.persistence");
   requireOneOf(c.noise, choices::kNoise, "sky.clouds.noise");
   requireNonNegative(c.color, "sky.clouds.color");
+}
+
+void validateGround(const Scene& s) {
   requireRange(s.ground.halfExtent, 1e-3f, 1e5f, "ground.half_extent");
   requireRange(s.ground.height, -1e4f, 1e4f, "ground.height");
   requireRange(s.ground.checkerSize, 1e-4f, 1e4f, "ground.checker_size");
   requireNonNegative(s.ground.albedoA, "ground.albedo_a");
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
+}
+
+void validateRender(const Scene& s) {
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
   requireOneOf(s.render.refraction, choices::kRefraction, "render.refraction");
   requireRange(float(s.render.glassSearchSteps), 1.0f, 64.0f, "render.glass_search_steps");
+}
+
+void validateWater(const Scene& s) {
   const Water& w = s.water;
   requireRange(float(w.grid), 2.0f, 8192.0f, "water.grid");
   requireRange(w.extent, 1e-3f, 1e4f, "water.extent");
@@ -128,6 +136,11 @@ void validateScene(const Scene& s) {
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
   requireRange(w.ior, 1.0f, 3.0f, "water.ior");
   requireNonNegative(w.absorption, "water.absorption");
+}
+
+// The pool, its terrain floor, and the water below its rim.
+void validatePool(const Scene& s) {
+  const Water& w = s.water;
   requireRange(s.pool.depth, 1e-3f, 1e3f, "pool.depth");
   requireNonNegative(s.pool.wallAlbedo, "pool.wall_albedo");
   requireOneOf(s.pool.wallPattern, choices::kWallPattern, "pool.wall_pattern");
@@ -154,6 +167,9 @@ void validateScene(const Scene& s) {
     throw std::runtime_error("water.level " + std::to_string(w.level) +
                              " must be below the pool's rim, the ground at " + std::to_string(s.ground.height));
   }
+}
+
+void validateSpheres(const Scene& s) {
   if (s.spheres.size() > TP_MAX_SPHERES) {
     throw std::runtime_error("spheres: at most " + std::to_string(TP_MAX_SPHERES) + ", got " +
                              std::to_string(s.spheres.size()));
@@ -176,6 +192,9 @@ void validateScene(const Scene& s) {
       }
     }
   }
+}
+
+void validateBoxes(const Scene& s) {
   if (s.boxes.size() > TP_MAX_BOXES) {
     throw std::runtime_error("boxes: at most " + std::to_string(TP_MAX_BOXES) + ", got " +
                              std::to_string(s.boxes.size()));
@@ -188,6 +207,9 @@ void validateScene(const Scene& s) {
     requireRange(box.yawDegrees, -360.0f, 360.0f, "boxes[].yaw");
     requireNonNegative(box.albedo, "boxes[].albedo");
   }
+}
+
+void validateAo(const Scene& s) {
   const Ao& ao = s.ao;
   requireOneOf(ao.pattern, choices::kAoPattern, "ao.pattern");
   requireRange(float(ao.kernelSize), 1.0f, float(TP_MAX_SSAO_KERNEL), "ao.kernel_size");
@@ -199,7 +221,24 @@ void validateScene(const Scene& s) {
   requireRange(float(ao.blurTaps), 1.0f, 32.0f, "ao.blur_taps");
   requireRange(ao.blurDepthTolerance, 1e-6f, 10.0f, "ao.blur_depth_tolerance");
   requireOneOf(ao.resolution, choices::kAoResolution, "ao.resolution");
-  for (const Drop& d : w.drops) validateDrop(d);
+}
+
+}  // namespace
+
+void validateScene(const Scene& s) {
+  requireFinite(s.camera.position, "camera.position");
+  requireFinite(s.camera.target, "camera.target");
+  requireFinite(s.camera.up, "camera.up");
+  validateCamera(s.camera);
+  validateSky(s);
+  validateGround(s);
+  validateRender(s);
+  validateWater(s);
+  validatePool(s);
+  validateSpheres(s);
+  validateBoxes(s);
+  validateAo(s);
+  for (const Drop& d : s.water.drops) validateDrop(d);
 }
 
 void validateDrop(const Drop& d) {

@@ -118,6 +118,59 @@ class Display {
   bool stale_ = false;  // the swapchain no longer matches the window
 };
 
+// The window's input since the last frame, to the panel or to the view:
+// F1 shows or hides the panel; over the panel, the mouse and keys work the
+// panel alone. Then the fly keys, held for `elapsed` seconds (a stall, a slow
+// frame or a minimised window, flies no farther than half a second's worth).
+void routeInput(Window& window, UiOverlay& overlay, ViewInput& input, const ViewInput::Apply& apply, bool& panelShown,
+                double elapsed) {
+  for (const InputEvent& event : window.takeInput()) {
+    if (event.kind == InputEvent::Kind::KeyDown && event.code == GLFW_KEY_F1) {
+      if (!event.repeat) panelShown = !panelShown;
+      continue;
+    }
+    const bool key = event.kind == InputEvent::Kind::KeyDown;
+    if (panelShown && (key ? overlay.wantsKeyboard() : overlay.wantsMouse())) continue;
+    input.handle(event, window.framebufferSize(), apply);
+  }
+  if (panelShown && overlay.wantsKeyboard()) return;
+  if (const auto fly = input.flying(window, std::min(0.5, elapsed))) apply(*fly);
+}
+
+// The panel over the frame, and what it asks for.
+void drawPanel(UiOverlay& overlay, ViewPanel& panel, ViewSession& session, const ViewInput::Apply& apply,
+               uint32_t frame, double fps, const render::RenderedFrame& last) {
+  overlay.beginFrame();
+  const PanelStatus status{.frame = frame,
+                           .paused = session.paused(),
+                           .fps = fps,
+                           .last = last.passes.empty() && last.srgb.empty() ? nullptr : &last,
+                           .shaderErrors = &session.shaderErrors(),
+                           .message = session.message(),
+                           .messageIsError = session.messageIsError()};
+  PanelRequests requests = panel.draw(session.renderer().scene(), status);
+  overlay.endFrame();
+  for (const ViewCommand& c : requests.commands) apply(c);
+  if (requests.scene) session.setScene(*requests.scene);
+}
+
+// What the script does before frame `shown`: a resize, drops, commands.
+// Returns whether it dropped anything.
+bool runScript(const ViewConfig& config, uint32_t shown, Window& window, ViewSession& session,
+               const ViewInput::Apply& apply) {
+  if (config.resize && config.resize->frame == shown) window.resize(config.resize->width, config.resize->height);
+  bool dropped = false;
+  for (const ScriptedDrop& d : config.drops) {
+    if (d.frame != shown) continue;
+    session.renderer().addDrop(d.drop);
+    dropped = true;
+  }
+  for (const ScriptedCommand& c : config.script) {
+    if (c.frame == shown) apply(c.command);
+  }
+  return dropped;
+}
+
 // The frames, until the window closes or config.frames were shown; the
 // last one rendered is kept in `last` (with its linear RGBA when the
 // screenshot is an EXR).
@@ -165,53 +218,18 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     // Minimised: nothing is rendered, the loop sleeps in the window system.
     if (window.shouldClose() || waitForArea(window).width == 0) break;
     UiOverlay& overlay = display.overlay();
-    for (const InputEvent& event : window.takeInput()) {
-      if (event.kind == InputEvent::Kind::KeyDown && event.code == GLFW_KEY_F1) {
-        if (!event.repeat) panelShown = !panelShown;
-        continue;
-      }
-      // Over the panel, the mouse and keys work the panel alone.
-      const bool key = event.kind == InputEvent::Kind::KeyDown;
-      if (panelShown && (key ? overlay.wantsKeyboard() : overlay.wantsMouse())) continue;
-      input.handle(event, window.framebufferSize(), apply);
-    }
     const Clock::time_point now = Clock::now();
-    // A stall (a slow frame, a minimised window) flies no farther than half a second's worth.
-    if (!(panelShown && overlay.wantsKeyboard())) {
-      if (const auto fly = input.flying(window, std::min(0.5, std::chrono::duration<double>(now - previous).count()))) {
-        apply(*fly);
-      }
-    }
+    routeInput(window, overlay, input, apply, panelShown, std::chrono::duration<double>(now - previous).count());
     previous = now;
     if (panelShown) {
-      overlay.beginFrame();
-      const PanelStatus status{.frame = stats.lastFrame,
-                               .paused = session.paused(),
-                               .fps = frameInterval > 0.0 ? 1.0 / frameInterval : 0.0,
-                               .last = last.passes.empty() && last.srgb.empty() ? nullptr : &last,
-                               .shaderErrors = &session.shaderErrors(),
-                               .message = session.message(),
-                               .messageIsError = session.messageIsError()};
-      PanelRequests requests = panel.draw(session.renderer().scene(), status);
-      overlay.endFrame();
-      for (const ViewCommand& c : requests.commands) apply(c);
-      if (requests.scene) session.setScene(*requests.scene);
+      drawPanel(overlay, panel, session, apply, stats.lastFrame, frameInterval > 0.0 ? 1.0 / frameInterval : 0.0, last);
     }
     // With the panel up, a paused frame is shown again for the panel's sake.
     if (waiting && !session.needsRender() && !window.takeRefresh() && !panelShown) {
       retitle(true);
       continue;
     }
-    if (config.resize && config.resize->frame == shown) window.resize(config.resize->width, config.resize->height);
-    bool dropped = false;
-    for (const ScriptedDrop& d : config.drops) {
-      if (d.frame != shown) continue;
-      session.renderer().addDrop(d.drop);
-      dropped = true;
-    }
-    for (const ScriptedCommand& c : config.script) {
-      if (c.frame == shown) apply(c.command);
-    }
+    const bool dropped = runScript(config, shown, window, session, apply);
     const bool final = config.frames && shown + 1 == *config.frames;
     const bool finalExr = final && base::hasExtension(config.screenshot, ".exr");
     const Clock::time_point renderStart = Clock::now();

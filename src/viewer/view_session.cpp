@@ -39,7 +39,6 @@ void ViewSession::setCamera() {
 
 bool ViewSession::apply(const ViewCommand& command) {
   const scene::Scene& scene = renderer_->scene();
-  const auto rayThrough = [&](glm::dvec2 pixel) { return pixelRay(scene.camera, width_, height_, pixel); };
   return std::visit(
       [&]<typename C>(const C& c) -> bool {
         if constexpr (std::is_same_v<C, command::Orbit>) {
@@ -55,33 +54,11 @@ bool ViewSession::apply(const ViewCommand& command) {
           camera_.reset();
           setCamera();
         } else if constexpr (std::is_same_v<C, command::Drop>) {
-          if (!scene.water.enabled) return false;
-          const sim::WaterState water = renderer_->waterState();
-          const auto hit = pickWater(rayThrough(c.pixel), scene.water, &water);
-          if (!hit) return false;
-          renderer_->addDrop(scene::Drop{float(hit->x), float(hit->z), kClickDropRadius, kClickDropAmplitude});
-          std::printf("drop at x %.3f, z %.3f\n", hit->x, hit->z);
-          changed_ = true;
+          return dropAt(c.pixel);
         } else if constexpr (std::is_same_v<C, command::Grab>) {
-          // The spheres where the frame on screen shows them (a path moves them in time).
-          const float time = float(lastRendered_.value_or(frame_)) * scene.water.frameTime;
-          const scene::Scene placed = scene::sceneAt(scene, time);
-          const Ray ray = rayThrough(c.pixel);
-          const auto picked = pickSphere(ray, placed.spheres);
-          grabbed_.reset();
-          if (!picked) return false;
-          const glm::vec3 center = placed.spheres[picked->index].center;
-          const auto anchor = rayPlaneY(ray, center.y, scene.camera.farPlane);
-          if (!anchor) return false;
-          grabbed_ = Grabbed{picked->index, center, *anchor, center};
+          return grab(c.pixel);
         } else if constexpr (std::is_same_v<C, command::Drag>) {
-          if (!grabbed_) return false;
-          const auto to = rayPlaneY(rayThrough(c.pixel), grabbed_->center.y, scene.camera.farPlane);
-          if (!to) return false;
-          const glm::dvec3 moved = glm::dvec3(grabbed_->center) + (*to - grabbed_->anchor);
-          grabbed_->now = glm::vec3(float(moved.x), grabbed_->center.y, float(moved.z));
-          renderer_->moveSphere(grabbed_->index, grabbed_->now);
-          changed_ = true;
+          return drag(c.pixel);
         } else if constexpr (std::is_same_v<C, command::Release>) {
           if (grabbed_ && grabbed_->now != grabbed_->center) {
             std::printf("moved sphere %zu to (%.3f, %.3f, %.3f)\n", grabbed_->index, grabbed_->now.x, grabbed_->now.y,
@@ -98,34 +75,9 @@ bool ViewSession::apply(const ViewCommand& command) {
           saveAsked_ = true;
           changed_ = true;
         } else if constexpr (std::is_same_v<C, command::ReloadShaders>) {
-          // A shader that fails keeps the code it had: its errors are shown
-          // and the frame goes on with the last good pipelines.
-          const gpu::ShaderReload reload = gpu::reloadShaders(shaderDir_);
-          for (const std::string& error : reload.errors) std::fprintf(stderr, "shader reload: %s\n", error.c_str());
-          // The summary on stdout either way: the errors themselves went to stderr.
-          tell("shader reload: " + std::to_string(reload.changed.size()) + " changed, " +
-                   std::to_string(reload.errors.size()) + " failed",
-               !reload.errors.empty(), stdout);
-          for (const std::string& name : reload.changed) std::printf("  %s\n", name.c_str());
-          std::fflush(stdout);
-          shaderErrors_ = reload.errors;
-          if (!reload.changed.empty()) {
-            renderer_ = std::make_unique<render::Renderer>(render::GoOnFrom{*renderer_});
-            changed_ = true;
-          }
-          return reload.errors.empty();
+          return reloadShaders();
         } else if constexpr (std::is_same_v<C, command::SaveScene>) {
-          const std::string path = c.path.empty() ? savePath("scene", ".json", lastRendered_.value_or(frame_)) : c.path;
-          try {
-            scene::Scene saved = scene;
-            // Read back from wherever the file goes.
-            if (!saved.sky.image.empty()) saved.sky.image = std::filesystem::absolute(saved.sky.image).string();
-            scene::saveSceneFile(path, saved);
-          } catch (const std::exception& e) {
-            tell(std::string("scene not saved: ") + e.what(), true);
-            return false;
-          }
-          tell("saved scene " + path + " (at frame " + std::to_string(lastRendered_.value_or(frame_)) + ")", false);
+          return saveScene(c.path);
         } else if constexpr (std::is_same_v<C, command::Set>) {
           try {
             return setScene(scene::withSetting(scene, c.key, c.value));
@@ -137,6 +89,85 @@ bool ViewSession::apply(const ViewCommand& command) {
         return true;
       },
       command);
+}
+
+Ray ViewSession::rayThrough(glm::dvec2 pixel) const {
+  return pixelRay(renderer_->scene().camera, width_, height_, pixel);
+}
+
+bool ViewSession::dropAt(glm::dvec2 pixel) {
+  const scene::Scene& scene = renderer_->scene();
+  if (!scene.water.enabled) return false;
+  const sim::WaterState water = renderer_->waterState();
+  const auto hit = pickWater(rayThrough(pixel), scene.water, &water);
+  if (!hit) return false;
+  renderer_->addDrop(scene::Drop{float(hit->x), float(hit->z), kClickDropRadius, kClickDropAmplitude});
+  std::printf("drop at x %.3f, z %.3f\n", hit->x, hit->z);
+  changed_ = true;
+  return true;
+}
+
+bool ViewSession::grab(glm::dvec2 pixel) {
+  const scene::Scene& scene = renderer_->scene();
+  // The spheres where the frame on screen shows them (a path moves them in time).
+  const float time = float(lastRendered_.value_or(frame_)) * scene.water.frameTime;
+  const scene::Scene placed = scene::sceneAt(scene, time);
+  const Ray ray = rayThrough(pixel);
+  const auto picked = pickSphere(ray, placed.spheres);
+  grabbed_.reset();
+  if (!picked) return false;
+  const glm::vec3 center = placed.spheres[picked->index].center;
+  const auto anchor = rayPlaneY(ray, center.y, scene.camera.farPlane);
+  if (!anchor) return false;
+  grabbed_ = Grabbed{picked->index, center, *anchor, center};
+  return true;
+}
+
+bool ViewSession::drag(glm::dvec2 pixel) {
+  const scene::Scene& scene = renderer_->scene();
+  if (!grabbed_) return false;
+  const auto to = rayPlaneY(rayThrough(pixel), grabbed_->center.y, scene.camera.farPlane);
+  if (!to) return false;
+  const glm::dvec3 moved = glm::dvec3(grabbed_->center) + (*to - grabbed_->anchor);
+  grabbed_->now = glm::vec3(float(moved.x), grabbed_->center.y, float(moved.z));
+  renderer_->moveSphere(grabbed_->index, grabbed_->now);
+  changed_ = true;
+  return true;
+}
+
+bool ViewSession::reloadShaders() {
+  // A shader that fails keeps the code it had: its errors are shown
+  // and the frame goes on with the last good pipelines.
+  const gpu::ShaderReload reload = gpu::reloadShaders(shaderDir_);
+  for (const std::string& error : reload.errors) std::fprintf(stderr, "shader reload: %s\n", error.c_str());
+  // The summary on stdout either way: the errors themselves went to stderr.
+  tell("shader reload: " + std::to_string(reload.changed.size()) + " changed, " + std::to_string(reload.errors.size()) +
+           " failed",
+       !reload.errors.empty(), stdout);
+  for (const std::string& name : reload.changed) std::printf("  %s\n", name.c_str());
+  std::fflush(stdout);
+  shaderErrors_ = reload.errors;
+  if (!reload.changed.empty()) {
+    renderer_ = std::make_unique<render::Renderer>(render::GoOnFrom{*renderer_});
+    changed_ = true;
+  }
+  return reload.errors.empty();
+}
+
+bool ViewSession::saveScene(const std::string& wanted) {
+  const scene::Scene& scene = renderer_->scene();
+  const std::string path = wanted.empty() ? savePath("scene", ".json", lastRendered_.value_or(frame_)) : wanted;
+  try {
+    scene::Scene saved = scene;
+    // Read back from wherever the file goes.
+    if (!saved.sky.image.empty()) saved.sky.image = std::filesystem::absolute(saved.sky.image).string();
+    scene::saveSceneFile(path, saved);
+  } catch (const std::exception& e) {
+    tell(std::string("scene not saved: ") + e.what(), true);
+    return false;
+  }
+  tell("saved scene " + path + " (at frame " + std::to_string(lastRendered_.value_or(frame_)) + ")", false);
+  return true;
 }
 
 std::string ViewSession::savePath(const char* stem, const char* extension, uint32_t frame) const {

@@ -11,6 +11,7 @@
 
 #include "render/renderer.hpp"
 #include "viewer/camera_controller.hpp"
+#include "viewer/water_pick.hpp"
 
 namespace tp::app {
 
@@ -126,6 +127,13 @@ class ViewSession {
     glm::vec3 now{0.0f};     // where the drag has put it
   };
   void setCamera();
+  // apply()'s commands that take more than a line: each returns what apply() does.
+  Ray rayThrough(glm::dvec2 pixel) const;  // the camera's ray through a frame pixel
+  bool dropAt(glm::dvec2 pixel);
+  bool grab(glm::dvec2 pixel);
+  bool drag(glm::dvec2 pixel);
+  bool reloadShaders();
+  bool saveScene(const std::string& path);  // empty: a name of its own in the save folder
   // `stem`-NNNN.`extension` in the save folder (NNNN: `frame`), never over an earlier one.
   std::string savePath(const char* stem, const char* extension, uint32_t frame) const;
   // Prints the message (on `stream`; by default stderr for an error, else
