@@ -12,19 +12,20 @@ Bindings& Bindings::uniformBuffer(uint32_t binding, const GraphBuffer& buffer, U
 Bindings& Bindings::storageBuffer(uint32_t binding, const GraphBuffer& buffer, Use use) {
   use_(buffer.ref, use);
   const gpu::Buffer* b = buffer.buffer;
-  entries_.push_back({binding, vk::DescriptorType::eStorageBuffer, [b]() -> const gpu::Buffer& { return *b; }});
+  entries_.push_back(
+      {binding, vk::DescriptorType::eStorageBuffer, [b]() -> const gpu::Buffer& { return *b; }, nullptr, {}});
   return *this;
 }
 
 Bindings& Bindings::storageBuffer(uint32_t binding, const SwappingBuffer& buffer, Use use) {
   for (ResourceRef ref : buffer.refs) use_(ref, use);
-  entries_.push_back({binding, vk::DescriptorType::eStorageBuffer, buffer.current});
+  entries_.push_back({binding, vk::DescriptorType::eStorageBuffer, buffer.current, nullptr, {}});
   return *this;
 }
 
 Bindings& Bindings::storageImage(uint32_t binding, const GraphImage& image, Use use) {
   use_(image.ref, use);
-  entries_.push_back({binding, vk::DescriptorType::eStorageImage, {}, image.image});
+  entries_.push_back({binding, vk::DescriptorType::eStorageImage, {}, image.image, {}});
   return *this;
 }
 
@@ -36,7 +37,8 @@ Bindings& Bindings::sampledImage(uint32_t binding, const GraphImage& image, vk::
 
 Bindings& Bindings::constantBuffer(uint32_t binding, const gpu::Buffer& buffer) {
   const gpu::Buffer* b = &buffer;
-  entries_.push_back({binding, vk::DescriptorType::eUniformBuffer, [b]() -> const gpu::Buffer& { return *b; }});
+  entries_.push_back(
+      {binding, vk::DescriptorType::eUniformBuffer, [b]() -> const gpu::Buffer& { return *b; }, nullptr, {}});
   return *this;
 }
 
