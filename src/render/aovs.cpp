@@ -75,23 +75,18 @@ void Aovs::declare(FrameGraph& graph, const FrameInputs& in, const shader::Groun
       };
       auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eClear,
                                     vk::ClearValue{.depthStencil = {1.0f, 0}});
-      cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, normal.extent},
-                                           .layerCount = 1,
-                                           .colorAttachmentCount = 2,
-                                           .pColorAttachments = targets,
-                                           .pDepthAttachment = &depthTarget});
-      setViewport(cmd, normal.extent);
-      gpu::bindPipeline(cmd, ground_, ground);
-      set.bind(cmd, ground_, pc.descriptors);
-      gpu::draw(cmd, kGroundVertices);
-      if (poolDraw) drawPool(cmd, pc.descriptors, *walls_, *floor_, set, *poolDraw);
-      drawObjects(cmd, pc.descriptors, spheres_, boxes_, set, inView);
-      if (waterDraw) {
-        gpu::bindPipeline(cmd, *water_, waterDraw->params);
-        set.bind(cmd, *water_, pc.descriptors);
-        drawWater(cmd, *waterDraw);
-      }
-      cmd.endRendering();
+      renderTo(cmd, targets, &depthTarget, normal.extent, [&] {
+        gpu::bindPipeline(cmd, ground_, ground);
+        set.bind(cmd, ground_, pc.descriptors);
+        gpu::draw(cmd, kGroundVertices);
+        if (poolDraw) drawPool(cmd, pc.descriptors, *walls_, *floor_, set, *poolDraw);
+        drawObjects(cmd, pc.descriptors, spheres_, boxes_, set, inView);
+        if (waterDraw) {
+          gpu::bindPipeline(cmd, *water_, waterDraw->params);
+          set.bind(cmd, *water_, pc.descriptors);
+          drawWater(cmd, *waterDraw);
+        }
+      });
     };
   });
   declareReadback(graph, passes::kReadbackNormal, normalRef_, normalReadback_);

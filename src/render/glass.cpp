@@ -63,16 +63,11 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                                 vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
                  auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal,
                                                vk::AttachmentLoadOp::eClear, vk::ClearValue{.depthStencil = {1.0f, 0}});
-                 cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, backFaces.extent},
-                                                      .layerCount = 1,
-                                                      .colorAttachmentCount = 1,
-                                                      .pColorAttachments = &target,
-                                                      .pDepthAttachment = &depthTarget});
-                 setViewport(cmd, backFaces.extent);
-                 cmd.bindPipeline(back_.bindPoint, *back_.pipeline);
-                 set.bind(cmd, back_, pc.descriptors);
-                 drawSpheres(cmd, back_, spheres);
-                 cmd.endRendering();
+                 renderTo(cmd, std::span(&target, 1), &depthTarget, backFaces.extent, [&] {
+                   cmd.bindPipeline(back_.bindPoint, *back_.pipeline);
+                   set.bind(cmd, back_, pc.descriptors);
+                   drawSpheres(cmd, back_, spheres);
+                 });
                };
              },
              {.cached = false, .runIf = inView});

@@ -57,15 +57,11 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
                  auto colorTarget =
                      attachment(target, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eClear,
                                 vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
-                 pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, target.extent},
-                                                         .layerCount = 1,
-                                                         .colorAttachmentCount = 1,
-                                                         .pColorAttachments = &colorTarget});
-                 setViewport(pc.cmd, target.extent);
-                 gpu::bindPipeline(pc.cmd, *causticsPipeline_, water.params);
-                 set.bind(pc.cmd, *causticsPipeline_, pc.descriptors);
-                 drawWater(pc.cmd, water);
-                 pc.cmd.endRendering();
+                 renderTo(pc.cmd, std::span(&colorTarget, 1), nullptr, target.extent, [&] {
+                   gpu::bindPipeline(pc.cmd, *causticsPipeline_, water.params);
+                   set.bind(pc.cmd, *causticsPipeline_, pc.descriptors);
+                   drawWater(pc.cmd, water);
+                 });
                };
              },
              {.cached = true, .runIf = {}});

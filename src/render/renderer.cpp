@@ -26,7 +26,6 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/frustum.hpp"
 #include "shading/objects_model.hpp"
-#include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "sim/water_driver.hpp"
 

@@ -47,15 +47,11 @@ void Sky::declareBackground(FrameGraph& graph, const GraphImage& color, const Fr
     const gpu::Image& target = pass.attach(color, Use::ColorWrite);
     return [this, &set, &target](PassContext& pc) {
       auto info = attachment(target, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eDontCare);
-      pc.cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, target.extent},
-                                              .layerCount = 1,
-                                              .colorAttachmentCount = 1,
-                                              .pColorAttachments = &info});
-      pc.cmd.bindPipeline(background_.bindPoint, *background_.pipeline);
-      set.bind(pc.cmd, background_, pc.descriptors);
-      setViewport(pc.cmd, target.extent);
-      gpu::draw(pc.cmd, 3);
-      pc.cmd.endRendering();
+      renderTo(pc.cmd, std::span(&info, 1), nullptr, target.extent, [&] {
+        pc.cmd.bindPipeline(background_.bindPoint, *background_.pipeline);
+        set.bind(pc.cmd, background_, pc.descriptors);
+        gpu::draw(pc.cmd, 3);
+      });
     };
   });
 }

@@ -57,27 +57,24 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, b
   if (t.gbuffer()) colorTargets.insert(colorTargets.end(), {gbufferTarget(t.normal), gbufferTarget(t.ambient)});
   auto depthTarget = attachment(*t.depth.image, vk::ImageLayout::eDepthAttachmentOptimal, load,
                                 vk::ClearValue{.depthStencil = {1.0f, 0}});
-  const vk::Extent2D extent = t.color.image->extent;
-  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
-                                       .layerCount = 1,
-                                       .colorAttachmentCount = uint32_t(colorTargets.size()),
-                                       .pColorAttachments = colorTargets.data(),
-                                       .pDepthAttachment = &depthTarget});
-  setViewport(cmd, extent);
-  draw();
-  cmd.endRendering();
+  renderTo(cmd, colorTargets, &depthTarget, t.color.image->extent, draw);
 }
 
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
               const std::function<void()>& draw) {
   auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
   auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, color.extent},
+  renderTo(cmd, std::span(&colorTarget, 1), &depthTarget, color.extent, draw);
+}
+
+void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingAttachmentInfo> colors,
+              const vk::RenderingAttachmentInfo* depth, vk::Extent2D extent, const std::function<void()>& draw) {
+  cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
                                        .layerCount = 1,
-                                       .colorAttachmentCount = 1,
-                                       .pColorAttachments = &colorTarget,
-                                       .pDepthAttachment = &depthTarget});
-  setViewport(cmd, color.extent);
+                                       .colorAttachmentCount = uint32_t(colors.size()),
+                                       .pColorAttachments = colors.data(),
+                                       .pDepthAttachment = depth});
+  setViewport(cmd, extent);
   draw();
   cmd.endRendering();
 }

@@ -3,6 +3,7 @@
 // attachment stored after the pass, the opaque surfaces' framing and
 // pipelines, and what every pass may read (FrameInputs).
 #include <functional>
+#include <span>
 #include <string>
 
 #include "gpu/context.hpp"
@@ -48,6 +49,11 @@ struct Samplers {
 void setViewport(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
 vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout layout, vk::AttachmentLoadOp load,
                                        vk::ClearValue clear = {});
+
+// Renders into `colors` (and `depth`, when given) over `extent`: begins
+// rendering, sets the viewport and scissor, draws, ends.
+void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingAttachmentInfo> colors,
+              const vk::RenderingAttachmentInfo* depth, vk::Extent2D extent, const std::function<void()>& draw);
 
 // A surface pass's attachments, declared: colour drawn over, depth and the
 // G-buffer cleared by the first surface pass (`first`) and drawn over by the rest.

@@ -3,7 +3,6 @@
 // the drops and sphere moves still to apply, sleep, checkpoints and resume.
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include "gpu/context.hpp"
