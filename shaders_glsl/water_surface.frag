@@ -12,6 +12,8 @@ void main() {
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
   const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
-  if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(worldPosition, normalize(t));
+  const vec3 down = normalize(t);
+  const RayDifferential rd = rayDifferential(worldPosition, down);
+  if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(worldPosition, down, rd);
   color = vec4(mix(transmitted, reflected, waterFresnel(-dot(view, n))), 1.0);
 }

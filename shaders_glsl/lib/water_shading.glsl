@@ -1,5 +1,5 @@
 // The water surface's shading shared by its two refraction modes: inputs,
-// bindings 0-4, 6 and 7, what a ray leaving the surface sees above it (the
+// bindings 0-4 and 6-8, what a ray leaving the surface sees above it (the
 // spheres and boxes, the walls above the water, else the sky's
 // equirectangular lookup) and below it (the pool and the objects, cast
 // exactly, through the absorbing water), and Schlick's Fresnel.
@@ -19,6 +19,8 @@ layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform Objects { SceneObjects objects; };
 layout(binding = 6) uniform sampler2D caustics;
 layout(binding = 7) uniform sampler2D glossyMap;  // the glossy walls' and spheres' environment
+layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  // shared/pool_trace.h's
+#include "shared/pool_trace.h"
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
@@ -44,12 +46,35 @@ vec3 radianceAbove(vec3 p, vec3 r) {
              : radiance;
 }
 
+// A ray's screen derivatives (Igehy 1999): of its origin and of its unit
+// direction, one pixel right (x) and down (y).
+struct RayDifferential {
+  vec3 originX, originY, directionX, directionY;
+};
+
+// Taken where every lane of the pixel quad runs the same code: derivatives
+// of values computed in divergent code (a cast's hit) are undefined.
+RayDifferential rayDifferential(vec3 origin, vec3 direction) {
+  return RayDifferential(dFdx(origin), dFdy(origin), dFdx(direction), dFdy(direction));
+}
+
+// The footprint in xz of the pixel where its ray, origin + s dir, meets a
+// surface with normal n: each differential carried along the ray to the
+// surface's tangent plane.
+vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
+  const vec3 x = rd.originX + s * rd.directionX, y = rd.originY + s * rd.directionY;
+  const float facing = dot(dir, n);
+  const vec3 dx = x - dir * (dot(x, n) / facing), dy = y - dir * (dot(y, n) / facing);
+  return abs(dx.xz) + abs(dy.xz);
+}
+
 // What a ray leaving the surface at p downwards sees: the pool (walls, and the
 // floor lit through the caustics) or an object in front of it, attenuated
 // along its path through the water.
-vec3 radianceBelow(vec3 p, vec3 t) {
+vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
   const PoolHit hit = tracePool(pool, p, t);
-  vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal, fwidth(hit.position.xz),
+  vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal,
+                                                hitFootprint(rd, t, hit.distance, hit.normal),
                                                 texture(caustics, causticsUv(pool, hit.position.xz)).r)
                             : glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0)),
                                              t, hit.normal, pool.wallGloss.xy);
@@ -76,7 +101,8 @@ float waterFresnel(float cosAir) {
 // between the surface and the camera.
 vec4 shadeFromBelow(vec3 view, vec3 n) {
   n = -n;  // towards the camera, into the water
-  const vec3 reflected = radianceBelow(worldPosition, reflect(view, n));
+  const vec3 r = reflect(view, n);
+  const vec3 reflected = radianceBelow(worldPosition, r, rayDifferential(worldPosition, r));
   const vec3 t = refract(view, n, surface.absorption.w);
   const bool total = dot(t, t) == 0.0;
   const vec3 transmitted = total ? vec3(0.0) : radianceAbove(worldPosition, t);

@@ -12,8 +12,8 @@ TP_BEGIN
 
 struct PoolParams {
   vec4 box;         // x: half size of the square pool, y: rim height, z: mean floor depth below the rim, w: terrain amplitude
-  vec4 terrain;     // x: terrain frequency (1/m), y: persistence; zw unused
-  uvec4 noise;      // x: octaves, y: seed, z: ray-march steps, w: bisection steps
+  vec4 terrain;     // x: terrain frequency (1/m), y: persistence, z: lowest floor vertex, w: highest (metres)
+  uvec4 noise;      // x: octaves, y: seed, z: the floor mesh's vertices per side; w unused
   vec4 wallAlbedo;  // rgb: of plain walls; w: 1 for brick walls, 0 for plain
   GroundParams tiles;  // the floor's checker: plane.z tile size, albedoA, albedoB
   vec4 brick;         // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights

@@ -111,35 +111,6 @@ TP_INLINE PoolHit poolHit(float distance, vec3 position, vec3 normal, bool onFlo
   return h;
 }
 
-// The first wall or floor point along origin + s dir (origin inside the pool,
-// dir going down): the walls analytically, the floor by marching the height
-// field in noise.z steps up to the walls and bisecting noise.w times. The
-// accurate refraction mode's cast, shared with C++ to measure it.
-TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir) {
-  vec2 walls = poolWallDistances(pool, origin, dir);
-  float sWall = max(min(walls.x, walls.y), 0.0f);
-  float sBottom = dir.y < 0.0f ? (poolBottom(pool) - origin.y) / dir.y : 1e30f;
-  float sEnd = min(sWall, sBottom);
-  float previous = 0.0f;
-  for (uint i = 1u; i <= pool.noise.z; ++i) {
-    float s = sEnd * float(i) / float(pool.noise.z);
-    vec3 p = origin + s * dir;
-    if (p.y <= poolFloorHeight(pool, vec2(p.x, p.z))) {
-      float lo = previous, hi = s;
-      for (uint k = 0u; k < pool.noise.w; ++k) {
-        float mid = 0.5f * (lo + hi);
-        vec3 m = origin + mid * dir;
-        if (m.y <= poolFloorHeight(pool, vec2(m.x, m.z))) hi = mid; else lo = mid;
-      }
-      vec3 hit = origin + hi * dir;
-      return poolHit(hi, hit, poolFloorNormal(pool, vec2(hit.x, hit.z), kPoolFloorNormalSpacing), true);
-    }
-    previous = s;
-  }
-  vec3 wallPoint = origin + sWall * dir;
-  return poolHit(sWall, wallPoint, poolWallNormal(walls, dir), false);
-}
-
 // Where world point p lands on the screen, in pixels from the top-left corner.
 TP_INLINE vec2 screenPixel(FrameUniforms frame, vec3 p) {
   vec4 clip = frame.viewProjection * vec4(p, 1.0f);

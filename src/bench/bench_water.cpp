@@ -22,6 +22,7 @@
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
+#include "shared/pool_trace.h"
 #include "shared/shading.h"
 
 namespace tp::app {
@@ -50,7 +51,7 @@ struct FloorErrors {
 // Where each mode reads what lies under the water, against where the exact
 // refracted ray (the reference's BVH, from the raster's own surface point and
 // normal) meets it, in pixels on screen, averaged over the water's pixels.
-// Accurate: the shared casts (tracePool, then castObjects) the shader runs.
+// Accurate: the shared casts (tracePool on the floor mesh, then castObjects) the shader runs.
 // Apparent: the texel the shader reads (the shared apparentDepthTexel), whose
 // centre shows that point.
 FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov, const std::vector<uint8_t>& water,
@@ -63,6 +64,7 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
   const render::ReferenceScene exact(below, placed.spheres);
   const shader::SceneObjects objects = render::sceneObjects(placed);
   const shader::PoolParams pool = render::poolParams(s);
+  const std::vector<glm::vec4> floorVertices = render::poolFloorVertices(pool);
   const auto u = render::frameUniforms(s, aov.width, aov.height);
   double accurate = 0.0, apparent = 0.0;
   size_t count = 0;
@@ -77,7 +79,7 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
     if (!truth.hit()) continue;
     const glm::vec2 truePixel = shader::screenPixel(u, p + truth.distance * t);
 
-    const shader::PoolHit cast = shader::tracePool(pool, p, t);
+    const shader::PoolHit cast = shader::tracePool(pool, p, t, floorVertices.data());
     const shader::ObjectHit object =
         shader::castObjects(objects, glm::uvec2(objects.count.z, objects.count.w), p, t, cast.distance);
     const float distance = object.distance > 0.0f ? object.distance : cast.distance;

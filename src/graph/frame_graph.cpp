@@ -224,7 +224,7 @@ const RecordedPass* findPass(const std::vector<RecordedPass>& passes, const Pass
 }
 
 std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<const ResourceRef> requested,
-                                             gpu::GpuTimer* timer) {
+                                             gpu::GpuTimer* timer, const AfterPass& afterPass) {
   const vk::raii::CommandBuffer& cmd = context.cmd;
   std::vector<RecordedPass> recorded;
   const auto keep = toRecord(requested);
@@ -237,7 +237,9 @@ std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<con
     gpu::pipelineBarrier(cmd, bufferBarriers, imageBarriers);
     const std::string name(pass.kind->name);
     uint32_t scope = timer ? timer->begin(cmd, name) : 0;
-    RecordedPass done{pass.kind, name, 0.0, {}, {}};
+    RecordedPass done;
+    done.kind = pass.kind;
+    done.name = name;
     for (const auto& [ref, use] : pass.uses) done.resources.push_back(at(ref).name);
     {
       gpu::CountScope counting(done.counts);
@@ -251,6 +253,7 @@ std::vector<RecordedPass> FrameGraph::record(PassContext& context, std::span<con
     pass.seen.clear();
     for (const auto& [ref, use] : pass.uses) pass.seen.push_back(at(ref).version);
     pass.ran = true;
+    if (afterPass) afterPass(done);
     recorded.push_back(std::move(done));
   }
   std::vector<vk::BufferMemoryBarrier2> toHost;

@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -26,7 +27,10 @@ struct PassContext {
 struct RecordedPass {
   const PassKind* kind = nullptr;
   std::string name;
-  double milliseconds = 0.0;           // NaN where the device has no timestamps
+  double milliseconds = 0.0;  // NaN where the device has no timestamps
+  // By wall clock, from the pass's own submission to its end (NaN unless the
+  // frame was submitted a pass at a time: FrameRequest::passWallTimes).
+  double wallMilliseconds = std::numeric_limits<double>::quiet_NaN();
   gpu::CommandCounts counts;           // what the pass recorded
   std::vector<std::string> resources;  // the names of the images and buffers it uses
 };
@@ -71,9 +75,11 @@ class FrameGraph {
 
   // Returns the passes recorded, in order, with what each recorded (times are
   // the caller's to fill in from `timer`). Requested buffers end with a
-  // barrier that makes them readable on the host.
+  // barrier that makes them readable on the host. `afterPass`, if given, is
+  // called after each pass is recorded (to submit it on its own).
+  using AfterPass = std::function<void(RecordedPass&)>;
   std::vector<RecordedPass> record(PassContext& context, std::span<const ResourceRef> requested,
-                                   gpu::GpuTimer* timer = nullptr);
+                                   gpu::GpuTimer* timer = nullptr, const AfterPass& afterPass = {});
 
  private:
   struct Resource {

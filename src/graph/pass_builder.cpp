@@ -11,10 +11,7 @@ Bindings& Bindings::uniformBuffer(uint32_t binding, const GraphBuffer& buffer, U
 
 Bindings& Bindings::storageBuffer(uint32_t binding, const GraphBuffer& buffer, Use use) {
   use_(buffer.ref, use);
-  const gpu::Buffer* b = buffer.buffer;
-  entries_.push_back(
-      {binding, vk::DescriptorType::eStorageBuffer, [b]() -> const gpu::Buffer& { return *b; }, nullptr, {}});
-  return *this;
+  return constantStorageBuffer(binding, *buffer.buffer);
 }
 
 Bindings& Bindings::storageBuffer(uint32_t binding, const SwappingBuffer& buffer, Use use) {
@@ -39,6 +36,13 @@ Bindings& Bindings::constantBuffer(uint32_t binding, const gpu::Buffer& buffer) 
   const gpu::Buffer* b = &buffer;
   entries_.push_back(
       {binding, vk::DescriptorType::eUniformBuffer, [b]() -> const gpu::Buffer& { return *b; }, nullptr, {}});
+  return *this;
+}
+
+Bindings& Bindings::constantStorageBuffer(uint32_t binding, const gpu::Buffer& buffer) {
+  const gpu::Buffer* b = &buffer;
+  entries_.push_back(
+      {binding, vk::DescriptorType::eStorageBuffer, [b]() -> const gpu::Buffer& { return *b; }, nullptr, {}});
   return *this;
 }
 

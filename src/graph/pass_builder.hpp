@@ -51,6 +51,8 @@ class Bindings {
   // Data outside the graph: uploaded once, or filled by the host before the
   // frame records (the pool's and the objects' uniforms, the SSAO kernel).
   Bindings& constantBuffer(uint32_t binding, const gpu::Buffer& buffer);
+  // The same, read as a storage buffer (too large for a uniform buffer).
+  Bindings& constantStorageBuffer(uint32_t binding, const gpu::Buffer& buffer);
 
   void bind(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeline, gpu::DescriptorArena& arena) const;
 

@@ -19,6 +19,7 @@
 #include "shared/glass.h"
 #include "shared/glossy.h"
 #include "shared/objects.h"
+#include "shared/pool_trace.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
 
@@ -72,7 +73,10 @@ class Tracer {
         maxSpecular_(maxSpecular),
         absorption_(scene.water.absorption),
         ior_(scene.water.ior) {
-    if (hasPool(scene)) pool_ = poolParams(scene);
+    if (hasPool(scene)) {
+      pool_ = poolParams(scene);
+      floorVertices_ = poolFloorVertices(pool_);
+    }
     // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
     if (hasGlossySurface(scene))
       glossySky_ = skyImage_ ? *skyImage_ : proceduralSkyImage(scene.sky, scene.sky.textureWidth);
@@ -148,7 +152,7 @@ class Tracer {
                                       glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
-        const glm::vec3 n = shader::poolFloorNormal(pool_, xz, shader::kPoolFloorNormalSpacing);
+        const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
         return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), 1.0f);
       }
@@ -230,6 +234,7 @@ class Tracer {
   std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
   shader::GroundParams ground_;
   shader::PoolParams pool_{};
+  std::vector<glm::vec4> floorVertices_;  // the floor mesh's normals and heights
   uint32_t maxSpecular_;
   glm::vec3 absorption_;
   float ior_;

@@ -61,7 +61,7 @@ void Aovs::declare(FrameGraph& graph, const FrameInputs& in, const shader::Groun
     const gpu::Image& depth = pass.attach(depthRef_, Use::DepthWrite);
     // One set for every pipeline: each binds what its vertex shader reads.
     Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
-    if (poolDraw) set.constantBuffer(1, *poolDraw->uniforms);
+    if (poolDraw) set.constantBuffer(1, *poolDraw->uniforms).constantStorageBuffer(5, *poolDraw->floorVertices);
     if (waterDraw) set.storageBuffer(2, waterDraw->state, Use::VertexStorageRead);
     return [this, &normal, &position, &depth, &set, ground, poolDraw, waterDraw, &inView](PassContext& pc) {
       const auto& cmd = pc.cmd;

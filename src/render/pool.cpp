@@ -22,10 +22,14 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
   const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
   floorIndices_ = gpu::createFilledBuffer(ctx, floorGridIndices, vk::BufferUsageFlagBits::eIndexBuffer,
                                           gpu::MemoryUse::Device, "pool floor indices");
+  floorVertices_ = gpu::createFilledBuffer(ctx, poolFloorVertices(pool), vk::BufferUsageFlagBits::eStorageBuffer,
+                                           gpu::MemoryUse::Device, "pool floor vertices");
   // Filled by the renderer before each frame: the spheres may move.
   objectUniforms_ = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "scene objects");
-  draw_ = PoolDraw{&uniforms_, &objectUniforms_, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid, {}};
+  draw_ = PoolDraw{
+      &uniforms_, &objectUniforms_, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid, &floorVertices_,
+      {}};
   if (scene.render.caustics) {
     caustics_ =
         gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
@@ -75,7 +79,8 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .constantBuffer(1, uniforms_)
                         .sampledImage(2, draw_.caustics, in.clamp, Use::FragmentSample)
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
-                        .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample);
+                        .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
+                        .constantStorageBuffer(5, floorVertices_);
     return [this, targets, &set](PassContext& pc) {
       drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor_, set, draw_); });
     };

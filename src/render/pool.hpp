@@ -16,14 +16,15 @@ constexpr uint32_t kCausticsSize = 512;  // texels per side of the caustics text
 constexpr uint32_t kWallVertices = 24;   // pool_walls.vert: four quads
 
 // What other passes need of the pool: its uniforms, the spheres the water's
-// rays can meet, the floor grid, and the caustics (the caustics pass's
+// rays can meet, the floor grid and its vertices, and the caustics (the caustics pass's
 // target, or one texel of 1 when the scene has caustics off).
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
   const gpu::Buffer* objects = nullptr;
   const gpu::Buffer* floorIndices = nullptr;
   uint32_t floorIndexCount = 0;
-  uint32_t floorGrid = 0;  // vertices per side
+  uint32_t floorGrid = 0;                      // vertices per side
+  const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (poolFloorVertices)
   GraphImage caustics;
 };
 
@@ -38,7 +39,7 @@ class Pool {
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
 
  private:
-  gpu::Buffer uniforms_, objectUniforms_, floorIndices_;
+  gpu::Buffer uniforms_, objectUniforms_, floorIndices_, floorVertices_;
   gpu::Image caustics_;
   PoolDraw draw_;
   gpu::Pipeline walls_, floor_;

@@ -1,6 +1,7 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -316,15 +317,24 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
 
   gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it
-  gpu::submitAndWait(
-      ctx_,
-      [&](const vk::raii::CommandBuffer& cmd) {
-        timer.reset(cmd);
-        PassContext context{cmd, res_->descriptors};
-        gpu::CountScope counting(out.counts);
-        out.passes = res_->graph.record(context, requested, &timer);
-      },
-      "frame rendering");
+  gpu::Submission submission(ctx_, "frame rendering");
+  timer.reset(submission.cmd());
+  FrameGraph::AfterPass submitPass;
+  if (request.passWallTimes) {
+    submission.flush();  // the timer's reset, before the first pass's clock starts
+    submitPass = [&submission](RecordedPass& pass) {
+      const auto start = std::chrono::steady_clock::now();
+      submission.flush();
+      pass.wallMilliseconds =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+  }
+  {
+    PassContext context{submission.cmd(), res_->descriptors};
+    gpu::CountScope counting(out.counts);
+    out.passes = res_->graph.record(context, requested, &timer, submitPass);
+  }
+  submission.finish();
   const auto times = timer.read();
   for (size_t p = 0; p < out.passes.size(); ++p) out.passes[p].milliseconds = times.at(p).milliseconds;
   RecordedPass* simulate = findPass(out.passes, passes::kSimulate);

@@ -19,6 +19,10 @@ struct FrameRequest {
   bool ldr = false;   // read back the tonemapped sRGB preview
   bool aovs = false;  // read back world normal, world position and view depth (needs RendererOptions::aovs)
   bool ao = false;    // read back the AO and the G-buffer it came from (needs a scene with AO on)
+  // Submit each pass on its own and wait for it, timing it by wall clock
+  // (RecordedPass::wallMilliseconds): lavapipe's timestamps miss the
+  // rasterization it defers to the end of a render pass.
+  bool passWallTimes = false;
 };
 
 struct RendererOptions {

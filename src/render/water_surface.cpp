@@ -78,7 +78,8 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
     // The floor the refracted (or, from below, reflected) rays meet, and the
     // glossy walls and spheres they meet.
     set.sampledImage(6, pool.caustics, in.clamp, Use::FragmentSample)
-        .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample);
+        .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample)
+        .constantStorageBuffer(8, *pool.floorVertices);
     return [this, &color, &depth, &set](PassContext& pc) {
       drawOver(pc.cmd, color, depth, [&] {
         for (const gpu::Pipeline* side : {&above_, &below_}) {

@@ -1,14 +1,32 @@
 #include "shading/pool_model.hpp"
 
+#include <algorithm>
+
+#include "shared/shading.h"
+
 namespace tp::render {
+
+std::vector<glm::vec4> poolFloorVertices(const shader::PoolParams& pool) {
+  std::vector<glm::vec4> vertices;
+  vertices.reserve(size_t(kPoolFloorGrid) * kPoolFloorGrid);
+  for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
+    for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
+      const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
+      const glm::vec2 xz = (uv * 2.0f - 1.0f) * pool.box.x;
+      vertices.emplace_back(shader::poolFloorNormal(pool, xz, shader::kPoolFloorNormalSpacing),
+                            shader::poolFloorHeight(pool, xz));
+    }
+  }
+  return vertices;
+}
 
 shader::PoolParams poolParams(const scene::Scene& scene) {
   const scene::Pool& p = scene.pool;
   const scene::Terrain& t = scene.terrain;
-  return shader::PoolParams{
+  shader::PoolParams params{
       .box = {0.5f * scene.water.extent, scene.ground.height, p.depth, t.amplitude},
       .terrain = {t.frequency, t.persistence, 0.0f, 0.0f},
-      .noise = {t.octaves, t.seed, kPoolMarchSteps, kPoolBisections},
+      .noise = {t.octaves, t.seed, kPoolFloorGrid, 0u},
       .wallAlbedo = glm::vec4(p.wallAlbedo, p.wallPattern == "brick" ? 1.0f : 0.0f),
       .tiles = {.plane = {0.0f, 0.0f, p.tileSize, 0.0f},
                 .albedoA = glm::vec4(p.tileAlbedoA, 0.0f),
@@ -20,6 +38,14 @@ shader::PoolParams poolParams(const scene::Scene& scene) {
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
       .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
   };
+  // The slab the floor mesh lies in, where the water's rays walk its cells.
+  const std::vector<glm::vec4> vertices = poolFloorVertices(params);
+  params.terrain.z = params.terrain.w = vertices.front().w;
+  for (const glm::vec4& v : vertices) {
+    params.terrain.z = std::min(params.terrain.z, v.w);
+    params.terrain.w = std::max(params.terrain.w, v.w);
+  }
+  return params;
 }
 
 }  // namespace tp::render

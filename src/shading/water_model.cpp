@@ -99,11 +99,12 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     meshes.push_back(std::move(walls));
     // As pool_floor.vert draws it: the same grid and the same height function, bit for bit.
     scene::Mesh floor{"pool_floor", {}, waterGridIndices(kPoolFloorGrid)};
+    const std::vector<glm::vec4> vertices = poolFloorVertices(p);
     for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
       for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
         const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
         const glm::vec2 xz = (uv * 2.0f - 1.0f) * s;
-        floor.positions.push_back({xz.x, shader::poolFloorHeight(p, xz), xz.y});
+        floor.positions.push_back({xz.x, vertices[size_t(j) * kPoolFloorGrid + i].w, xz.y});
       }
     }
     meshes.push_back(std::move(floor));
