@@ -407,6 +407,26 @@ TEST(View, PngScreenshotIsTheFrameRenderWrites) {
   EXPECT_EQ(differingPixels(shown, pngBytes(png)), 0u);
 }
 
+// Dynamic resolution, with a target no frame can meet: the viewer renders
+// at smaller sizes until the smallest (an eighth of each side, rounded to 8
+// pixels), scaled to the window, and the water goes on through each new
+// renderer: the last frame shown is the frame `render` draws at that size.
+TEST(View, TargetFpsRendersSmallerAndCarriesTheWaterOn) {
+  ScratchDir dir;
+  const std::string shot = dir.file("shot.png"), png = dir.file("render.png");
+  const ProcessResult r = runViewer("--size 320x176 --frames 40 --target-fps 1000 --screenshot " + shot, dir);
+  ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
+  EXPECT_NE(r.out.find("window 320x176"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("dynamic resolution for 1000.0 fps: last frame rendered at 40x24"), std::string::npos) << r.out;
+  const ProcessResult rendered = runTidepool(
+      "render --validate --width 40 --height 24 --frame 39 --out " + dir.file("render.exr") + " --png " + png, dir);
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+  const io::FloatImage shown = io::readImage(shot), expected = io::readImage(png);
+  ASSERT_EQ(shown.width, 40u);
+  ASSERT_EQ(shown.height, 24u);
+  EXPECT_EQ(shown.pixels, expected.pixels);
+}
+
 // The test, whole: 60 frames with a drop clicked (by pixel) into
 // the water, one resize, the panel up, settings changed through the panel's
 // path (ViewSession::setScene, from --script set: a new refraction mode and AO
@@ -530,6 +550,9 @@ TEST(View, RefusesBadInputBeforeOpeningAWindow) {
       {"--script 5:save-scene:" + dir.file("missing/scene.json"), "does not exist"},
       {"--save-dir " + dir.file("missing"), "does not exist"},
       {"--save-dir " + dir.file("dry.json"), "does not exist"},
+      {"--target-fps 0", "--target-fps"},
+      {"--target-fps fast", "--target-fps"},
+      {"--target-fps 5000", "--target-fps"},
   };
   for (const auto& [args, expected] : cases) {
     const std::string line = expectCleanFailure("view " + args, dir, files, noDisplay);

@@ -91,6 +91,8 @@ class Renderer {
   Renderer(GoOnFrom from, const scene::Scene& scene);
   // The same, with the scene as the previous renderer now has it.
   explicit Renderer(GoOnFrom from);
+  // The same at another size (the viewer's dynamic resolution).
+  Renderer(GoOnFrom from, uint32_t width, uint32_t height);
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
   ~Renderer();

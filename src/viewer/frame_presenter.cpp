@@ -71,9 +71,10 @@ FramePresenter::~FramePresenter() {
 }
 
 FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba,
-                                            UiOverlay* overlay) {
-  if (rgba.size() != upload_.size)
-    throw std::logic_error("FramePresenter::show: the frame is not the size it was made for");
+                                            vk::Extent2D size, UiOverlay* overlay) {
+  if (size.width > frameSize_.width || size.height > frameSize_.height || size.width == 0 || size.height == 0 ||
+      rgba.size() != vk::DeviceSize(size.width) * size.height * 4)
+    throw std::logic_error("FramePresenter::show: the frame is not within the size it was made for");
   if (ctx_.device().waitForFences(*done_, VK_TRUE, kTimeoutNs) == vk::Result::eTimeout) {
     throw std::runtime_error("the viewer's last frame did not finish within 600 s on " + ctx_.deviceName());
   }
@@ -92,7 +93,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   }
   // The host's writes before a submission are visible to it: no barrier.
   std::memcpy(upload_.mapped, rgba.data(), rgba.size());
-  record(swapchain, index, overlay);
+  record(swapchain, index, size, overlay);
   ctx_.device().resetFences(*done_);
   const vk::SemaphoreSubmitInfo wait{.semaphore = *acquired_, .stageMask = kAcquired.stage};
   const vk::SemaphoreSubmitInfo signal{.semaphore = *swapchain.readyToPresent(index),
@@ -120,7 +121,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   return suboptimal ? Result::PresentedSuboptimal : Result::Presented;
 }
 
-void FramePresenter::record(const Swapchain& swapchain, uint32_t index, UiOverlay* overlay) {
+void FramePresenter::record(const Swapchain& swapchain, uint32_t index, vk::Extent2D size, UiOverlay* overlay) {
   const vk::Image target = swapchain.image(index);
   const vk::Extent2D window = swapchain.extent();
   const auto dst = letterbox(frameSize_, window);
@@ -134,8 +135,7 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index, UiOverla
   const vk::ImageMemoryBarrier2 toUpload[] = {gpu::imageBarrier(frame_.handle(), color, kBlitDone, L::eUndefined,
                                                                 gpu::access::transferWrite, L::eTransferDstOptimal)};
   gpu::pipelineBarrier(cmd_, {}, toUpload);
-  const vk::BufferImageCopy copy{.imageSubresource = {color, 0, 0, 1},
-                                 .imageExtent = {frameSize_.width, frameSize_.height, 1}};
+  const vk::BufferImageCopy copy{.imageSubresource = {color, 0, 0, 1}, .imageExtent = {size.width, size.height, 1}};
   cmd_.copyBufferToImage(upload_.handle(), frame_.handle(), L::eTransferDstOptimal, copy);
 
   const vk::ImageMemoryBarrier2 toBlit[] = {
@@ -152,12 +152,11 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index, UiOverla
         gpu::imageBarrier(target, color, kClearWrite, L::eTransferDstOptimal, kBlitWrite, L::eTransferDstOptimal)};
     gpu::pipelineBarrier(cmd_, {}, cleared);
   }
-  const bool sameSize =
-      dst[1].x - dst[0].x == int32_t(frameSize_.width) && dst[1].y - dst[0].y == int32_t(frameSize_.height);
+  const bool sameSize = dst[1].x - dst[0].x == int32_t(size.width) && dst[1].y - dst[0].y == int32_t(size.height);
   const vk::ImageBlit blit{
       .srcSubresource = {color, 0, 0, 1},
       .srcOffsets = std::array<vk::Offset3D, 2>{vk::Offset3D{0, 0, 0},
-                                                vk::Offset3D{int32_t(frameSize_.width), int32_t(frameSize_.height), 1}},
+                                                vk::Offset3D{int32_t(size.width), int32_t(size.height), 1}},
       .dstSubresource = {color, 0, 0, 1},
       .dstOffsets = dst};
   cmd_.blitImage(frame_.handle(), L::eTransferSrcOptimal, target, L::eTransferDstOptimal, blit,

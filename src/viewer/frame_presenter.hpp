@@ -18,19 +18,19 @@ namespace tp::app {
 // milliseconds of rendering on lavapipe) and needs no change to the
 // renderer or its frame graph.
 //
-// The renderer keeps its fixed size and the blit scales the frame to the
-// window, keeping its aspect (black bars fill the rest). Recreating the
-// renderer at each new window size would restart its simulation (the new
-// one would replay every frame, and lose the drops made so far) and
-// reallocate every target at each step of a drag; with a fixed size a
-// resize costs only a new swapchain, and the frame shown is the frame
-// `tidepool render` writes at that size.
+// The frame keeps its size whatever the window's (or a smaller one under
+// dynamic resolution, in the same letterbox) and the blit scales it to the
+// window, keeping its aspect (black bars fill the rest). Following each new
+// window size would reallocate every target at each step of a drag; with a
+// fixed size a resize costs only a new swapchain, and the frame shown is the
+// frame `tidepool render` writes at that size.
 // Where the frame goes in a window of the given size: as large as fits, its
 // aspect kept, centred; the corners of the blit's destination (z 0 and 1).
 std::array<vk::Offset3D, 2> letterbox(vk::Extent2D frame, vk::Extent2D window);
 
 class FramePresenter {
  public:
+  // `frameSize`: the largest frame, whose aspect the window's letterbox keeps.
   FramePresenter(const gpu::Context& ctx, vk::Extent2D frameSize);
   // Waits for its last submission.
   ~FramePresenter();
@@ -42,12 +42,15 @@ class FramePresenter {
     PresentedSuboptimal,  // shown, but the swapchain should be recreated
     OutOfDate,            // not shown: recreate the swapchain and show it again
   };
-  // `rgba`: the frame's RGBA8 sRGB-encoded pixels, rows top to bottom;
-  // `overlay`: the panel drawn over it, or none.
-  Result show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba, UiOverlay* overlay = nullptr);
+  // `rgba`: the frame's RGBA8 sRGB-encoded pixels, rows top to bottom, of
+  // `size` (at most the presenter's frame size: smaller under dynamic
+  // resolution, and scaled up to the same letterbox); `overlay`: the panel
+  // drawn over it, or none.
+  Result show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba, vk::Extent2D size,
+              UiOverlay* overlay = nullptr);
 
  private:
-  void record(const Swapchain& swapchain, uint32_t index, UiOverlay* overlay);
+  void record(const Swapchain& swapchain, uint32_t index, vk::Extent2D size, UiOverlay* overlay);
 
   const gpu::Context& ctx_;
   vk::Extent2D frameSize_;

@@ -231,9 +231,15 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_flag("--no-panel", o.noPanel, "Start with the panel hidden (F1 shows it)");
+  cmd->add_option("--target-fps", o.targetFps,
+                  "Dynamic resolution: render below --size (down to an eighth of each side) when the frames come "
+                  "slower than F per second, back up when they come fast enough; the frame shown is scaled to the "
+                  "window, and the panel and the summary give the size rendered")
+      ->type_name("F")
+      ->check(CLI::Range(1.0, 1000.0));
   cmd->add_flag("--profile", o.profile,
                 "At the end, print the last frame rendered's passes as `render --profile` does (GPU ms, dispatches, "
-                "draws, workgroups)");
+                "draws, workgroups; no wall ms: the frames are submitted whole)");
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -302,6 +308,7 @@ int runView(const ViewOptions& o) {
   }
   config.shaderDir = o.shaderDir.empty() ? base::dataDir("shaders_glsl", TIDEPOOL_SHADERS_DIR).string() : o.shaderDir;
   config.panel = !o.noPanel;
+  if (o.targetFps > 0.0) config.targetFps = o.targetFps;
   config.profile = o.profile;
   if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
     throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +

@@ -19,6 +19,7 @@ struct ViewOptions {
   std::string saveDir;
   std::string shaderDir;  // empty: base::dataDir's shaders_glsl (installed, or the checkout's)
   bool noPanel = false;
+  double targetFps = 0.0;  // 0: off (the frame renders at --size)
   bool profile = false;
   bool validate = false;
   std::string device;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "io/image_io.hpp"
 #include "render/renderer.hpp"
 #include "viewer/frame_presenter.hpp"
+#include "viewer/resolution_governor.hpp"
 #include "viewer/swapchain.hpp"
 #include "viewer/view_input.hpp"
 #include "viewer/view_panel.hpp"
@@ -40,7 +42,10 @@ struct ViewStats {
   double showSeconds = 0.0;    // in FramePresenter::show and swapchain recreation, waits for FIFO included
   uint32_t recreations = 0;
   vk::Extent2D window;
-  uint32_t lastFrame = 0;  // the frame number of the last frame rendered
+  vk::Extent2D rendered;           // the size of the last frame rendered
+  std::vector<double> intervals;   // seconds between frames shown, from the first
+  uint32_t resolutionChanges = 0;  // made by --target-fps
+  uint32_t lastFrame = 0;          // the frame number of the last frame rendered
 };
 
 // The framebuffer's size once the window is not minimised (until then it
@@ -76,7 +81,7 @@ class Display {
   // recreating the swapchain (and showing it again) until it is presented.
   // Returns false when the window was closed while minimised: the frame was
   // not shown.
-  bool show(const std::vector<std::uint8_t>& rgba, bool panel, ViewStats& stats) {
+  bool show(const render::RenderedFrame& frame, bool panel, ViewStats& stats) {
     for (;;) {
       const vk::Extent2D area = waitForArea(window_);
       if (area.width == 0) return false;
@@ -94,7 +99,7 @@ class Display {
         stale_ = false;
         ++stats.recreations;
       }
-      switch (presenter_.show(swapchain_, rgba, panel ? &overlay_ : nullptr)) {
+      switch (presenter_.show(swapchain_, frame.srgb, {frame.width, frame.height}, panel ? &overlay_ : nullptr)) {
         case FramePresenter::Result::Presented:
           return true;
         case FramePresenter::Result::PresentedSuboptimal:
@@ -199,6 +204,8 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
       window.setTitle(title);
     }
   };
+  std::optional<ResolutionGovernor> governor;
+  if (config.targetFps) governor.emplace(glm::uvec2(config.width, config.height), *config.targetFps);
   ViewPanel panel;
   bool panelShown = config.panel;
   // Frames per second over the last frames shown (an exponential average of their intervals).
@@ -241,7 +248,7 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     }
     const Clock::time_point showStart = Clock::now();
     stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
-    const bool presented = display.show(last.srgb, panelShown, stats);
+    const bool presented = display.show(last, panelShown, stats);
     stats.showSeconds += secondsSince(showStart);
     if (!presented) break;
     ++shown;
@@ -249,13 +256,19 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     const Clock::time_point shownAt = Clock::now();
     if (stats.framesShown == 1) firstShown = shownAt;
     const double interval = std::chrono::duration<double>(shownAt - lastShown).count();
+    if (stats.framesShown > 1) stats.intervals.push_back(interval);
     frameInterval = frameInterval > 0.0 ? (1.0 - kFpsSmoothing) * frameInterval + kFpsSmoothing * interval : interval;
     lastShown = shownAt;
+    if (governor && stats.framesShown > 1 && governor->frameShown(interval)) {
+      session.renderAt(governor->size().x, governor->size().y);
+    }
     retitle(false);
   }
   stats.seconds = secondsSince(start);
   if (stats.framesShown > 1) stats.secondsAfterFirst = std::chrono::duration<double>(lastShown - firstShown).count();
   stats.window = display.extent();
+  stats.rendered = vk::Extent2D{last.width, last.height};
+  if (governor) stats.resolutionChanges = governor->changes();
   return stats;
 }
 
@@ -271,13 +284,20 @@ int runViewer(const ViewConfig& config) {
   const ViewStats stats = showFrames(session.context(), window, config, last);
   const double perFrame = stats.framesShown > 0 ? 1000.0 / stats.framesShown : 0.0;
   const double steadyFps = stats.secondsAfterFirst > 0.0 ? (stats.framesShown - 1) / stats.secondsAfterFirst : 0.0;
+  std::vector<double> intervals = stats.intervals;
+  std::sort(intervals.begin(), intervals.end());
+  const double medianFps = intervals.empty() ? 0.0 : 1.0 / intervals[intervals.size() / 2];
   std::printf(
-      "view: %u frames at %ux%u in %.2f s, %.2f fps, %.2f after the first (render %.1f ms, show %.1f ms per "
-      "frame) on %s; window %ux%u, swapchain recreations: %u; last frame number %u\n",
+      "view: %u frames at %ux%u in %.2f s, %.2f fps, %.2f after the first, %.2f median (render %.1f ms, show %.1f "
+      "ms per frame) on %s; window %ux%u, swapchain recreations: %u; last frame number %u\n",
       stats.framesShown, config.width, config.height, stats.seconds,
-      stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, steadyFps, stats.renderSeconds * perFrame,
-      stats.showSeconds * perFrame, session.context().deviceName().c_str(), stats.window.width, stats.window.height,
-      stats.recreations, stats.lastFrame);
+      stats.seconds > 0.0 ? stats.framesShown / stats.seconds : 0.0, steadyFps, medianFps,
+      stats.renderSeconds * perFrame, stats.showSeconds * perFrame, session.context().deviceName().c_str(),
+      stats.window.width, stats.window.height, stats.recreations, stats.lastFrame);
+  if (config.targetFps) {
+    std::printf("dynamic resolution for %.1f fps: last frame rendered at %ux%u, %u changes of size\n",
+                *config.targetFps, stats.rendered.width, stats.rendered.height, stats.resolutionChanges);
+  }
   if (config.profile && !last.passes.empty()) {
     std::printf("last frame rendered (%u):\n", stats.lastFrame);
     printProfile(last);

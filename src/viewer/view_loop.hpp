@@ -41,6 +41,7 @@ struct ViewConfig {
   std::string saveDir;                  // where Save writes view-NNNN.exr; empty: the working directory
   std::string shaderDir;                // the GLSL sources the reload key compiles
   bool panel = true;                    // the ImGui panel shows at first
+  std::optional<double> targetFps;      // dynamic resolution (ResolutionGovernor): frames per second to hold
   bool profile = false;                 // print the last frame's passes at the end
   bool validate = false;
   std::string device;

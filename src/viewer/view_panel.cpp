@@ -181,6 +181,7 @@ PanelRequests ViewPanel::draw(const scene::Scene& scene, const PanelStatus& stat
     return out;
   }
   ImGui::Text("frame %u%s, %.1f fps", status.frame, status.paused ? " (paused)" : "", status.fps);
+  if (status.last) ImGui::Text("rendered at %ux%u", status.last->width, status.last->height);
   if (ImGui::Button(status.paused ? "Run" : "Pause")) out.commands.push_back(command::TogglePause{});
   ImGui::SameLine();
   if (ImGui::Button("Step")) out.commands.push_back(command::Step{});

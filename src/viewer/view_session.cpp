@@ -232,6 +232,11 @@ bool ViewSession::setScene(const scene::Scene& wanted) {
   }
 }
 
+void ViewSession::renderAt(uint32_t width, uint32_t height) {
+  renderer_ = std::make_unique<render::Renderer>(render::GoOnFrom{*renderer_}, width, height);
+  changed_ = true;
+}
+
 void ViewSession::rendered(const render::RenderedFrame& frame) {
   if (saveAsked_) {
     const std::string path = savePath("view", ".exr", frame_);

@@ -98,6 +98,11 @@ class ViewSession {
   // changes nothing: returns false, message() says why.
   bool setScene(const scene::Scene& wanted);
 
+  // Renders from the next frame on at another size (dynamic resolution): a
+  // renderer made from the current one, the water going on. Commands keep
+  // taking pixels of the frame's full size.
+  void renderAt(uint32_t width, uint32_t height);
+
   // The outcome of the last save, scene change or shader reload, for the panel.
   const std::string& message() const { return message_; }
   bool messageIsError() const { return messageIsError_; }
