@@ -16,11 +16,12 @@ layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
-layout(binding = 4) uniform Objects { SceneObjects objects; };
+layout(binding = 4) uniform Objects { SceneObjects objects; };  // shared/object_cast.h's
 layout(binding = 6) uniform sampler2D caustics;
 layout(binding = 7) uniform sampler2D glossyMap;  // the glossy walls' and spheres' environment
 layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  // shared/pool_trace.h's
 #include "shared/pool_trace.h"
+#include "shared/object_cast.h"
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
@@ -40,7 +41,7 @@ vec3 radianceAbove(vec3 p, vec3 r) {
     radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0)), r,
                               wallNormal, pool.wallGloss.xy);
   }
-  const ObjectHit object = castObjects(objects, objects.count.xy, p, r, nearest);
+  const ObjectHit object = castObjects(objects.count.xy, p, r, nearest);
   return object.distance > 0.0
              ? glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), r, object.normal, object.material)
              : radiance;
@@ -79,7 +80,7 @@ vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
                             : glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0)),
                                              t, hit.normal, pool.wallGloss.xy);
   float distance = hit.distance;
-  const ObjectHit object = castObjects(objects, objects.count.zw, p, t, distance);
+  const ObjectHit object = castObjects(objects.count.zw, p, t, distance);
   if (object.distance > 0.0) {
     distance = object.distance;
     radiance = glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), t, object.normal,

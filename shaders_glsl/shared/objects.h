@@ -1,8 +1,8 @@
 // The scene's objects (Lambertian spheres and boxes) as the shaders see them:
 // a uniform buffer filled once per frame (render/objects_model.cpp) for the
 // rays cast in shaders (the water's reflected and refracted rays), the push
-// constants of their draws, and the one cast against all of them, shared with
-// C++.
+// constants of their draws, and the ray's tests against a sphere and a box
+// (the cast against all of them: shared/object_cast.h).
 #ifndef TP_SHARED_OBJECTS_H
 #define TP_SHARED_OBJECTS_H
 #include "shared/interop.h"
@@ -81,46 +81,6 @@ TP_INLINE vec4 rayBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
   if (axis < 0 || sNear > sFar || sNear <= 0.0f) return vec4(-1.0f);
   vec3 n = axis == 0 ? side * ax : (axis == 1 ? vec3(0.0f, side, 0.0f) : side * az);
   return vec4(sNear, n);
-}
-
-struct ObjectHit {
-  float distance;  // -1: none nearer than the limit
-  vec3 normal;     // unit, world
-  vec3 albedo;
-  vec2 material;   // x: specular, y: roughness; boxes have none
-};
-
-// The nearest sphere or box along origin + s dir (dir unit) with s < limit,
-// among the first `counts` (x spheres, y boxes): count.xy for every object,
-// count.zw for those below the rim, which alone rays under the water can meet.
-TP_INLINE ObjectHit castObjects(SceneObjects objects, uvec2 counts, vec3 origin, vec3 dir, float limit) {
-  ObjectHit hit;
-  hit.distance = -1.0f;
-  hit.normal = vec3(0.0f);
-  hit.albedo = vec3(0.0f);
-  hit.material = vec2(0.0f);
-  float nearest = limit;
-  for (uint i = 0u; i < counts.x; ++i) {
-    float s = raySphere(origin, dir, objects.spheres[i]);
-    if (s > 0.0f && s < nearest) {
-      nearest = s;
-      hit.distance = s;
-      hit.normal = normalize(origin + s * dir - vec3(objects.spheres[i]));
-      hit.albedo = vec3(objects.sphereAlbedo[i]);
-      hit.material = vec2(objects.sphereMaterial[i]);
-    }
-  }
-  for (uint i = 0u; i < counts.y; ++i) {
-    vec4 b = rayBox(origin, dir, objects.boxCenter[i], objects.boxHalfSize[i]);
-    if (b.x > 0.0f && b.x < nearest) {
-      nearest = b.x;
-      hit.distance = b.x;
-      hit.normal = vec3(b.y, b.z, b.w);
-      hit.albedo = vec3(objects.boxAlbedo[i]);
-      hit.material = vec2(0.0f);
-    }
-  }
-  return hit;
 }
 
 TP_END

@@ -22,6 +22,7 @@
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
+#include "shared/object_cast.h"
 #include "shared/pool_trace.h"
 #include "shared/shading.h"
 
