@@ -15,7 +15,7 @@ add_compile_options(-Wno-pass-failed)
 
 add_library(tidepool_cpu STATIC
   src/scene/scene.cpp src/scene/scene_file.cpp src/scene/camera.cpp
-  src/base/text_file.cpp src/base/atomic_file.cpp src/io/image_io.cpp
+  src/base/text_file.cpp src/base/atomic_file.cpp src/base/background_work.cpp src/io/image_io.cpp
   src/sim/water_state.cpp src/io/water_state_file.cpp src/sim/water_params.cpp src/sim/cpu_stepper.cpp src/sim/reference_sim.cpp
   src/sim/exact_mode.cpp
   src/viewer/camera_controller.cpp src/viewer/water_pick.cpp src/viewer/resolution_governor.cpp
@@ -24,7 +24,8 @@ target_include_directories(tidepool_cpu PUBLIC src shaders_glsl)
 target_compile_definitions(tidepool_cpu PUBLIC GLM_FORCE_DEPTH_ZERO_TO_ONE GLM_FORCE_RADIANS)
 target_compile_options(tidepool_cpu PUBLIC ${sanitizers} -fsanitize=fuzzer-no-link)
 target_link_options(tidepool_cpu PUBLIC ${sanitizers})
-target_link_libraries(tidepool_cpu PUBLIC PkgConfig::OIIO glm::glm nlohmann_json::nlohmann_json OpenMP::OpenMP_CXX)
+target_link_libraries(tidepool_cpu PUBLIC PkgConfig::OIIO glm::glm nlohmann_json::nlohmann_json OpenMP::OpenMP_CXX
+                      Threads::Threads)
 
 enable_testing()
 foreach(target scene_parser state_exr)
@@ -55,7 +56,7 @@ find_package(GTest REQUIRED)
 include(GoogleTest)
 add_executable(tidepool_cpu_tests
   tests/scene_file_test.cpp tests/sim_cpu_test.cpp tests/camera_controller_test.cpp tests/water_pick_test.cpp
-  tests/resolution_governor_test.cpp)
+  tests/resolution_governor_test.cpp tests/background_work_test.cpp)
 target_link_libraries(tidepool_cpu_tests PRIVATE tidepool_cpu GTest::gtest GTest::gtest_main)
 target_compile_definitions(tidepool_cpu_tests PRIVATE
   TIDEPOOL_EXE="/bin/false"  # process.hpp's runner; these suites do not run the executable

@@ -3,10 +3,13 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "base/atomic_file.hpp"
+#include "base/background_work.hpp"
 #include "cli/checkpoint_files.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/frame_sequence.hpp"
@@ -97,17 +100,26 @@ int runRenderSequence(const RenderOptions& o) {
   }
   InterruptGuard interrupts;
   SequenceProgress progress(uint32_t(todo.size()), range.count());
-  uint32_t written = 0;
-  for (const uint32_t f : todo) {
-    if (InterruptGuard::received()) break;
-    plan.request.frame = f;
-    const render::RenderedFrame frame = renderer.render(plan.request);
-    const std::string exr = framePath(o.out, f);
-    writeFrame(o, scene, frame, f, exr, o.png.empty() ? "" : framePath(o.png, f));
-    if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0)
-      saveCheckpoint(o.checkpointDir, renderer.checkpoint(), fingerprint);
-    ++written;
-    progress.rendered(f, exr);
+  uint32_t written = 0;  // by the writer; read once it is idle
+  {
+    // Frame f's files (and its checkpoint) are written while frame f+1
+    // renders, in the order a single thread would write them.
+    base::BackgroundWork writer;
+    for (const uint32_t f : todo) {
+      if (InterruptGuard::received()) break;
+      plan.request.frame = f;
+      auto frame = std::make_shared<const render::RenderedFrame>(renderer.render(plan.request));
+      std::optional<sim::WaterCheckpoint> checkpoint;
+      if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0) checkpoint = renderer.checkpoint();
+      writer.start([&, frame, f, checkpoint = std::move(checkpoint)] {
+        const std::string exr = framePath(o.out, f);
+        writeFrame(o, scene, *frame, f, exr, o.png.empty() ? "" : framePath(o.png, f));
+        if (checkpoint) saveCheckpoint(o.checkpointDir, *checkpoint, fingerprint);
+        ++written;
+        progress.rendered(f, exr);
+      });
+    }
+    writer.finish();
   }
   progress.finish();
   if (const int signal = InterruptGuard::received()) {
