@@ -167,6 +167,34 @@ TEST(BenchCli, FrameBenchmarkWritesItsTableAndRefusesBadInput) {
   expectCleanFailure("bench frame --csv " + bad.file("x.txt"), bad, {});
 }
 
+// Each pass of a frame, at each resolution, timed on its own; a pass that
+// ran in no timed frame (the cached sky) is not listed.
+TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
+  ScratchDir dir;
+  const std::string csv = dir.file("passes.csv");
+  ProcessResult r =
+      runTidepool("bench passes --validate --resolutions 48x32,32x16 --frames 2 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header, "width,height,pass,wall_ms,gpu_ms,runs,frame_wall_ms,fps,frames,device") << table.header;
+  // The default scene's frame after the first, pass by pass: simulate,
+  // caustics, background, ground, pool, objects, four AO passes (balanced:
+  // no upsample), water and the HDR readback; at each of the two sizes.
+  EXPECT_EQ(table.rows, 2 * 12);
+  for (const char* pass : {"water", "simulate", "ssao", "readback hdr"}) {
+    EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
+  }
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  ScratchDir bad;
+  for (const char* sizes : {"48", "48x32,0x32", "5000x10"}) {
+    const std::string error =
+        expectCleanFailure(std::string("bench passes --resolutions ") + sizes + " --csv " + bad.file("x.csv"), bad, {});
+    EXPECT_NE(error.find("bench passes"), std::string::npos) << error;
+  }
+  expectCleanFailure("bench passes --frames 0 --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench passes --csv " + bad.file("x.txt"), bad, {});
+}
+
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");

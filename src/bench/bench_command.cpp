@@ -100,6 +100,23 @@ void addFrameBench(CLI::App* bench, BenchFrameOptions& o) {
   addGpuOptions(frame, o.validate, o.device);
 }
 
+void addPassesBench(CLI::App* bench, BenchPassesOptions& o) {
+  CLI::App* passes = bench->add_subcommand(
+      "passes",
+      "Where a frame's time goes: each pass's wall ms (submitted on its own) and the frame's fps, per resolution");
+  passes->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
+      ->type_name("PATH")
+      ->check(CLI::ExistingFile);
+  passes->add_option("--resolutions", o.resolutions, "Image sizes WxH, each side 8 to 4096")
+      ->delimiter(',')
+      ->capture_default_str();
+  passes->add_option("--frames", o.frames, "Timed frames of each kind (whole, pass by pass) per resolution")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 100000u));
+  addOutputOptions(passes, o.csv, o.plot);
+  addGpuOptions(passes, o.validate, o.device);
+}
+
 void addIblBench(CLI::App* bench, BenchIblOptions& o) {
   CLI::App* ibl = bench->add_subcommand(
       "ibl",
@@ -170,6 +187,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   addWaterBench(bench, o.water);
   addSsaoBench(bench, o.ssao);
   addFrameBench(bench, o.frame);
+  addPassesBench(bench, o.passes);
   addIblBench(bench, o.ibl);
   addGlassBench(bench, o.glass);
   return bench;
@@ -181,6 +199,7 @@ int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);
+  if (bench->get_subcommand("passes")->parsed()) return runBenchPasses(o.passes);
   if (bench->get_subcommand("ibl")->parsed()) return runBenchIbl(o.ibl);
   if (bench->get_subcommand("glass")->parsed()) return runBenchGlass(o.glass);
   return 2;

@@ -4,6 +4,7 @@
 #include "bench/bench_frame.hpp"
 #include "bench/bench_glass.hpp"
 #include "bench/bench_ibl.hpp"
+#include "bench/bench_passes.hpp"
 #include "bench/bench_sim.hpp"
 #include "bench/bench_ssao.hpp"
 #include "bench/bench_tiles.hpp"
@@ -17,11 +18,12 @@ struct BenchOptions {
   BenchSsaoOptions ssao;
   BenchTilesOptions tiles;
   BenchFrameOptions frame;
+  BenchPassesOptions passes;
   BenchIblOptions ibl;
   BenchGlassOptions glass;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame, ibl, glass).
+// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame, passes, ibl, glass).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

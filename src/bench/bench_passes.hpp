@@ -1,0 +1,25 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp::app {
+
+struct BenchPassesOptions {
+  std::string scenePath;  // empty: the built-in scene
+  std::vector<std::string> resolutions{"1280x720", "640x360", "320x180"};
+  uint32_t frames = 10;  // timed frames of each kind per resolution
+  std::string csv = "bench_passes.csv";
+  std::string plot = "bench_passes.png";
+  bool validate = false;  // timings under validation are not representative
+  std::string device;
+};
+
+// `tidepool bench passes`: where a frame's time goes, by wall clock. At each
+// resolution, after a first frame: `frames` frames submitted whole (their
+// median wall time gives the frames per second), then `frames` more with
+// each pass submitted and waited for on its own (FrameRequest::passWallTimes):
+// each pass's median wall and GPU milliseconds. A table, CSV and a plot.
+int runBenchPasses(const BenchPassesOptions& options);
+
+}  // namespace tp::app
