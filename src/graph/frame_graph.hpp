@@ -70,6 +70,8 @@ class FrameGraph {
 
   // The host changed the resource's contents: cached passes reading it run again.
   void touch(ResourceRef ref);
+  // The layout an image is in after the frames recorded so far.
+  vk::ImageLayout layoutOf(ResourceRef ref) const { return resources_.at(ref.index).layout; }
   // Off: cached passes run every frame (a frame with nothing skipped, to compare against).
   void setCaching(bool on) { caching_ = on; }
 

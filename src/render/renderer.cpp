@@ -148,6 +148,7 @@ struct Renderer::Resources {
     std::vector<ResourceRef> requested;
     if (request.hdr) requested.push_back(targets.hdrReadback().ref.ref);
     if (request.ldr) requested.push_back(targets.ldrReadback().ref.ref);
+    if (request.present) requested.push_back(targets.ldr().ref);
     if (request.aovs) {
       if (!aovs) throw std::logic_error("AOVs requested from a renderer made without them");
       for (ResourceRef r : aovs->readbackRefs()) requested.push_back(r);
@@ -243,7 +244,17 @@ Renderer::Renderer(GoOnFrom from, const scene::Scene& scene)
   if (res_->water) res_->water->goOnFrom(*from.previous.res_->water);
 }
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+  try {
+    ctx_.device().waitIdle();
+  } catch (const vk::SystemError&) {
+    // A lost device: nothing runs any more.
+  }
+}
+
+PresentableImage Renderer::presentable() const {
+  return {res_->targets.ldr().image, res_->graph.layoutOf(res_->targets.ldr().ref)};
+}
 
 void Renderer::addDrop(const scene::Drop& drop) {
   if (!res_->water) throw std::runtime_error("a drop needs a scene with water");

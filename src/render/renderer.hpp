@@ -23,6 +23,18 @@ struct FrameRequest {
   // (RecordedPass::wallMilliseconds): lavapipe's timestamps miss the
   // rasterization it defers to the end of a render pass.
   bool passWallTimes = false;
+  // Leave the tonemapped sRGB image on the GPU for the caller to show
+  // (Renderer::presentable), with no readback.
+  bool present = false;
+};
+
+// The tonemapped image of the last frame rendered with FrameRequest::present,
+// and the layout it is in. Whoever reads it does so on the context's queue,
+// after that frame, puts it back in that layout, and makes its own reads and
+// that transition finish before the compute and transfer work that follows.
+struct PresentableImage {
+  const gpu::Image* image = nullptr;
+  vk::ImageLayout layout = vk::ImageLayout::eUndefined;
 };
 
 struct RendererOptions {
@@ -95,6 +107,8 @@ class Renderer {
   Renderer(GoOnFrom from, uint32_t width, uint32_t height);
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
+  // Waits for the device: work on its queue (a viewer's blit of its image)
+  // may still read its images.
   ~Renderer();
   RenderedFrame render(const FrameRequest& request);
   // A drop into the water (it wakes sleeping water), applied at the start of
@@ -124,6 +138,7 @@ class Renderer {
   // std::invalid_argument: those need a new renderer). Going back to an
   // earlier frame restarts the water with the new parameters.
   void setWaterDynamics(const scene::Water& water);
+  PresentableImage presentable() const;
   // The water's state now, downloaded. Throws without water.
   sim::WaterState waterState() const;
   // The checkpoint of the water as it stands. Throws without water, and

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -20,9 +19,15 @@ constexpr gpu::Access kAcquired{S::eAllTransfer, A::eNone};
 constexpr gpu::Access kClearWrite{S::eClear, A::eTransferWrite};
 constexpr gpu::Access kBlitWrite{S::eBlit, A::eTransferWrite};
 constexpr gpu::Access kBlitRead{S::eBlit, A::eTransferRead};
-// The blit of the previous frame read the image (a write-after-read: an
-// execution dependency is enough).
+// The blit read the renderer's image (a write-after-read: an execution
+// dependency is enough).
 constexpr gpu::Access kBlitDone{S::eBlit, A::eNone};
+// The renderer's image as a frame leaves it: written by the tonemap's compute
+// shader, perhaps read by a readback's copy since.
+constexpr gpu::Access kRendered{S::eComputeShader | S::eCopy, A::eShaderStorageWrite};
+// What the renderer does with the image next: the tonemap writes it, a
+// readback copies it.
+constexpr gpu::Access kRendererNext{S::eComputeShader | S::eCopy, A::eShaderStorageWrite | A::eTransferRead};
 // The panel drawn over the frame (UiOverlay::record).
 constexpr gpu::Access kPanelWrite{S::eColorAttachmentOutput, A::eColorAttachmentWrite};
 
@@ -38,17 +43,8 @@ std::array<vk::Offset3D, 2> letterbox(vk::Extent2D frame, vk::Extent2D window) {
   return {vk::Offset3D{x, y, 0}, vk::Offset3D{x + w, y + h, 1}};
 }
 
-FramePresenter::FramePresenter(const gpu::Context& ctx, vk::Extent2D frameSize)
-    : ctx_(ctx),
-      frameSize_(frameSize),
-      upload_(gpu::createBuffer(ctx, vk::DeviceSize(frameSize.width) * frameSize.height * 4,
-                                vk::BufferUsageFlagBits::eTransferSrc, gpu::MemoryUse::Upload, "viewer frame upload")),
-      // Written and read by transfers only; eSampled because createImage2D makes a view of every image.
-      frame_(gpu::createImage2D(ctx, frameSize, vk::Format::eR8G8B8A8Unorm,
-                                vk::ImageUsageFlagBits::eTransferDst | vk::ImageUsageFlagBits::eTransferSrc |
-                                    vk::ImageUsageFlagBits::eSampled,
-                                "viewer frame")) {
-  const auto features = ctx.physicalDevice().getFormatProperties(frame_.format).optimalTilingFeatures;
+FramePresenter::FramePresenter(const gpu::Context& ctx, vk::Extent2D frameSize) : ctx_(ctx), frameSize_(frameSize) {
+  const auto features = ctx.physicalDevice().getFormatProperties(vk::Format::eR8G8B8A8Unorm).optimalTilingFeatures;
   if (!(features & vk::FormatFeatureFlagBits::eBlitSrc) ||
       !(features & vk::FormatFeatureFlagBits::eSampledImageFilterLinear)) {
     throw std::runtime_error(ctx.deviceName() + " cannot blit R8G8B8A8 UNORM images with linear filtering");
@@ -70,10 +66,9 @@ FramePresenter::~FramePresenter() {
   }
 }
 
-FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::span<const std::uint8_t> rgba,
-                                            vk::Extent2D size, UiOverlay* overlay) {
-  if (size.width > frameSize_.width || size.height > frameSize_.height || size.width == 0 || size.height == 0 ||
-      rgba.size() != vk::DeviceSize(size.width) * size.height * 4)
+FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, const Frame& frame, UiOverlay* overlay) {
+  if (frame.size.width > frameSize_.width || frame.size.height > frameSize_.height || frame.size.width == 0 ||
+      frame.size.height == 0)
     throw std::logic_error("FramePresenter::show: the frame is not within the size it was made for");
   if (ctx_.device().waitForFences(*done_, VK_TRUE, kTimeoutNs) == vk::Result::eTimeout) {
     throw std::runtime_error("the viewer's last frame did not finish within 600 s on " + ctx_.deviceName());
@@ -91,9 +86,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   } catch (const vk::OutOfDateKHRError&) {
     return Result::OutOfDate;  // nothing acquired: the semaphore stays unsignalled
   }
-  // The host's writes before a submission are visible to it: no barrier.
-  std::memcpy(upload_.mapped, rgba.data(), rgba.size());
-  record(swapchain, index, size, overlay);
+  record(swapchain, index, frame, overlay);
   ctx_.device().resetFences(*done_);
   const vk::SemaphoreSubmitInfo wait{.semaphore = *acquired_, .stageMask = kAcquired.stage};
   const vk::SemaphoreSubmitInfo signal{.semaphore = *swapchain.readyToPresent(index),
@@ -121,7 +114,7 @@ FramePresenter::Result FramePresenter::show(const Swapchain& swapchain, std::spa
   return suboptimal ? Result::PresentedSuboptimal : Result::Presented;
 }
 
-void FramePresenter::record(const Swapchain& swapchain, uint32_t index, vk::Extent2D size, UiOverlay* overlay) {
+void FramePresenter::record(const Swapchain& swapchain, uint32_t index, const Frame& frame, UiOverlay* overlay) {
   const vk::Image target = swapchain.image(index);
   const vk::Extent2D window = swapchain.extent();
   const auto dst = letterbox(frameSize_, window);
@@ -131,16 +124,8 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index, vk::Exte
   using L = vk::ImageLayout;
 
   cmd_.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
-  // The frame image is rewritten whole: its old contents are not kept.
-  const vk::ImageMemoryBarrier2 toUpload[] = {gpu::imageBarrier(frame_.handle(), color, kBlitDone, L::eUndefined,
-                                                                gpu::access::transferWrite, L::eTransferDstOptimal)};
-  gpu::pipelineBarrier(cmd_, {}, toUpload);
-  const vk::BufferImageCopy copy{.imageSubresource = {color, 0, 0, 1}, .imageExtent = {size.width, size.height, 1}};
-  cmd_.copyBufferToImage(upload_.handle(), frame_.handle(), L::eTransferDstOptimal, copy);
-
   const vk::ImageMemoryBarrier2 toBlit[] = {
-      gpu::imageBarrier(frame_.handle(), color, gpu::access::transferWrite, L::eTransferDstOptimal, kBlitRead,
-                        L::eTransferSrcOptimal),
+      gpu::imageBarrier(frame.image, color, kRendered, frame.layout, kBlitRead, L::eTransferSrcOptimal),
       gpu::imageBarrier(target, color, kAcquired, L::eUndefined, bars ? kClearWrite : kBlitWrite,
                         L::eTransferDstOptimal)};
   gpu::pipelineBarrier(cmd_, {}, toBlit);
@@ -152,6 +137,7 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index, vk::Exte
         gpu::imageBarrier(target, color, kClearWrite, L::eTransferDstOptimal, kBlitWrite, L::eTransferDstOptimal)};
     gpu::pipelineBarrier(cmd_, {}, cleared);
   }
+  const vk::Extent2D size = frame.size;
   const bool sameSize = dst[1].x - dst[0].x == int32_t(size.width) && dst[1].y - dst[0].y == int32_t(size.height);
   const vk::ImageBlit blit{
       .srcSubresource = {color, 0, 0, 1},
@@ -159,8 +145,13 @@ void FramePresenter::record(const Swapchain& swapchain, uint32_t index, vk::Exte
                                                 vk::Offset3D{int32_t(size.width), int32_t(size.height), 1}},
       .dstSubresource = {color, 0, 0, 1},
       .dstOffsets = dst};
-  cmd_.blitImage(frame_.handle(), L::eTransferSrcOptimal, target, L::eTransferDstOptimal, blit,
+  cmd_.blitImage(frame.image, L::eTransferSrcOptimal, target, L::eTransferDstOptimal, blit,
                  sameSize ? vk::Filter::eNearest : vk::Filter::eLinear);
+  // The renderer's image back in its layout, the blit's read finished before
+  // the renderer's next writes and copies.
+  const vk::ImageMemoryBarrier2 back[] = {
+      gpu::imageBarrier(frame.image, color, kBlitDone, L::eTransferSrcOptimal, kRendererNext, frame.layout)};
+  gpu::pipelineBarrier(cmd_, {}, back);
   if (overlay) overlay->record(cmd_, swapchain, index);
   // Presentation needs no access of ours: the semaphore signalled after this
   // submission orders the present after the transition.

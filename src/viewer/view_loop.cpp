@@ -81,7 +81,7 @@ class Display {
   // recreating the swapchain (and showing it again) until it is presented.
   // Returns false when the window was closed while minimised: the frame was
   // not shown.
-  bool show(const render::RenderedFrame& frame, bool panel, ViewStats& stats) {
+  bool show(const FramePresenter::Frame& frame, bool panel, ViewStats& stats) {
     for (;;) {
       const vk::Extent2D area = waitForArea(window_);
       if (area.width == 0) return false;
@@ -99,7 +99,7 @@ class Display {
         stale_ = false;
         ++stats.recreations;
       }
-      switch (presenter_.show(swapchain_, frame.srgb, {frame.width, frame.height}, panel ? &overlay_ : nullptr)) {
+      switch (presenter_.show(swapchain_, frame, panel ? &overlay_ : nullptr)) {
         case FramePresenter::Result::Presented:
           return true;
         case FramePresenter::Result::PresentedSuboptimal:
@@ -149,7 +149,7 @@ void drawPanel(UiOverlay& overlay, ViewPanel& panel, ViewSession& session, const
   const PanelStatus status{.frame = frame,
                            .paused = session.paused(),
                            .fps = fps,
-                           .last = last.passes.empty() && last.srgb.empty() ? nullptr : &last,
+                           .last = last.width == 0 ? nullptr : &last,
                            .shaderErrors = &session.shaderErrors(),
                            .message = session.message(),
                            .messageIsError = session.messageIsError()};
@@ -239,16 +239,19 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
     const bool dropped = runScript(config, shown, window, session, apply);
     const bool final = config.frames && shown + 1 == *config.frames;
     const bool finalExr = final && base::hasExtension(config.screenshot, ".exr");
+    const bool finalPng = final && base::hasExtension(config.screenshot, ".png");
     const Clock::time_point renderStart = Clock::now();
     // Paused on an unchanged frame, the last one rendered is shown again.
-    if (session.needsRender() || dropped || finalExr || last.srgb.empty()) {
-      last = session.renderer().render({.frame = session.frame(), .hdr = session.wantsHdr() || finalExr, .ldr = true});
+    if (session.needsRender() || dropped || finalExr || finalPng || last.width == 0) {
+      last = session.renderer().render(
+          {.frame = session.frame(), .hdr = session.wantsHdr() || finalExr, .ldr = finalPng, .present = true});
       stats.lastFrame = session.frame();
       session.rendered(last);
     }
     const Clock::time_point showStart = Clock::now();
     stats.renderSeconds += std::chrono::duration<double>(showStart - renderStart).count();
-    const bool presented = display.show(last, panelShown, stats);
+    const render::PresentableImage image = session.renderer().presentable();
+    const bool presented = display.show({image.image->handle(), image.image->extent, image.layout}, panelShown, stats);
     stats.showSeconds += secondsSince(showStart);
     if (!presented) break;
     ++shown;
