@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // The pool floor: an n x n grid over the pool drawn with an index buffer, each
 // vertex's height and normal those the water's cast and the reference tracer
-// take (render::poolFloorVertices, uploaded once).
+// take (render::PoolModel::floorVertices, uploaded once).
 #include "shared/shading.h"
 
 layout(binding = 0) uniform Frame { FrameUniforms frame; };

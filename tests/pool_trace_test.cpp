@@ -29,8 +29,9 @@ CastErrors castAgainstBvh(const scene::Scene& s, int rays) {
     if (m.name == "pool_floor" || m.name == "pool_walls") pool.push_back(std::move(m));
   }
   const render::ReferenceScene exact(pool, {});
-  const shader::PoolParams params = render::poolParams(s);
-  const std::vector<glm::vec4> vertices = render::poolFloorVertices(params);
+  const render::PoolModel model = render::poolModel(s);
+  const shader::PoolParams& params = model.params;
+  const std::vector<glm::vec4>& vertices = model.floorVertices;
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   CastErrors e;
@@ -79,8 +80,9 @@ TEST(PoolTrace, MeetsAFlatFloorEverywhere) {
 // the default terrain, is the shading approximation the mesh makes.
 TEST(PoolTrace, MeshNormalsFollowTheTerrainsNormal) {
   const scene::Scene s = scene::defaultScene();
-  const shader::PoolParams params = render::poolParams(s);
-  const std::vector<glm::vec4> vertices = render::poolFloorVertices(params);
+  const render::PoolModel pool = render::poolModel(s);
+  const shader::PoolParams& params = pool.params;
+  const std::vector<glm::vec4>& vertices = pool.floorVertices;
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   double worst = 0.0, sum = 0.0;

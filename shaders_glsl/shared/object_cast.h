@@ -11,10 +11,8 @@
 
 #ifdef __cplusplus
 #define TP_OBJECTS_PARAM const SceneObjects &objects,
-#define TP_OBJECTS_ARG(o) o,
 #else
 #define TP_OBJECTS_PARAM
-#define TP_OBJECTS_ARG(o)
 #endif
 
 TP_BEGIN

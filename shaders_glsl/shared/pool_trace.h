@@ -5,7 +5,7 @@
 // diagonal from (i+1, j) to (i, j+1)), walked cell by cell along the ray and
 // cut exactly, within the slab between its lowest and highest vertex.
 //
-// The includer provides the vertices (poolFloorVertices: normal, height),
+// The includer provides the vertices (PoolModel::floorVertices: normal, height),
 // row by row: in GLSL a storage buffer `floorVertices`, in C++ the pointer
 // each function takes last.
 #ifndef TP_SHARED_POOL_TRACE_H
@@ -26,20 +26,9 @@ TP_INLINE vec4 poolFloorVertex(PoolParams pool, int i, int j TP_FLOOR_VERTICES_P
   return floorVertices[j * int(pool.noise.z) + i];
 }
 
-// The floor's shading normal at xz: its triangle's vertex normals
-// interpolated, as the rasterizer interpolates them where the floor is drawn.
-TP_INLINE vec3 poolFloorMeshNormal(PoolParams pool, vec2 xz TP_FLOOR_VERTICES_PARAM) {
-  int cells = int(pool.noise.z) - 1;
-  vec2 g = (xz + pool.box.x) * (0.5f * float(cells) / pool.box.x);
-  int i = clamp(int(floor(g.x)), 0, cells - 1), j = clamp(int(floor(g.y)), 0, cells - 1);
-  vec2 f = clamp(g - vec2(float(i), float(j)), vec2(0.0f), vec2(1.0f));
-  vec3 a = vec3(poolFloorVertex(pool, i, j TP_FLOOR_VERTICES_ARG));
-  vec3 b = vec3(poolFloorVertex(pool, i + 1, j TP_FLOOR_VERTICES_ARG));
-  vec3 c = vec3(poolFloorVertex(pool, i, j + 1 TP_FLOOR_VERTICES_ARG));
-  vec3 d = vec3(poolFloorVertex(pool, i + 1, j + 1 TP_FLOOR_VERTICES_ARG));
-  vec3 n = f.x + f.y <= 1.0f ? a + (b - a) * f.x + (c - a) * f.y : d + (c - d) * (1.0f - f.x) + (b - d) * (1.0f - f.y);
-  return normalize(n);
-}
+// Floor grid coordinates per metre: vertex (i, j) at (i, j), the pool's -x,
+// -z corner at 0.
+TP_INLINE float poolFloorGridScale(PoolParams pool) { return 0.5f * float(int(pool.noise.z) - 1) / pool.box.x; }
 
 // The floor's height at cell-local coordinates f (0..1 each way) of the cell
 // whose heights are a (i, j), b (i+1, j), c (i, j+1), d (i+1, j+1), in the
@@ -47,6 +36,22 @@ TP_INLINE vec3 poolFloorMeshNormal(PoolParams pool, vec2 xz TP_FLOOR_VERTICES_PA
 TP_INLINE float poolCellHeight(vec4 abcd, vec2 f) {
   if (f.x + f.y <= 1.0f) return abcd.x + (abcd.y - abcd.x) * f.x + (abcd.z - abcd.x) * f.y;
   return abcd.w + (abcd.z - abcd.w) * (1.0f - f.x) + (abcd.y - abcd.w) * (1.0f - f.y);
+}
+
+// The floor's shading normal at xz: its triangle's vertex normals
+// interpolated, as the rasterizer interpolates them where the floor is drawn.
+TP_INLINE vec3 poolFloorMeshNormal(PoolParams pool, vec2 xz TP_FLOOR_VERTICES_PARAM) {
+  int cells = int(pool.noise.z) - 1;
+  vec2 g = (xz + pool.box.x) * poolFloorGridScale(pool);
+  int i = clamp(int(floor(g.x)), 0, cells - 1), j = clamp(int(floor(g.y)), 0, cells - 1);
+  vec2 f = clamp(g - vec2(float(i), float(j)), vec2(0.0f), vec2(1.0f));
+  vec4 a = poolFloorVertex(pool, i, j TP_FLOOR_VERTICES_ARG);
+  vec4 b = poolFloorVertex(pool, i + 1, j TP_FLOOR_VERTICES_ARG);
+  vec4 c = poolFloorVertex(pool, i, j + 1 TP_FLOOR_VERTICES_ARG);
+  vec4 d = poolFloorVertex(pool, i + 1, j + 1 TP_FLOOR_VERTICES_ARG);
+  // Each component of the normal interpolated as the heights are.
+  return normalize(vec3(poolCellHeight(vec4(a.x, b.x, c.x, d.x), f), poolCellHeight(vec4(a.y, b.y, c.y, d.y), f),
+                        poolCellHeight(vec4(a.z, b.z, c.z, d.z), f)));
 }
 
 // Where along [s0, s1] the ray (height y0 + s dy, cell-local position
@@ -83,8 +88,7 @@ TP_INLINE PoolHit tracePool(PoolParams pool, vec3 origin, vec3 dir TP_FLOOR_VERT
     float sLowest = (lowest - origin.y) / dir.y;
     float sOut = min(sLowest, sWall);
     int cells = int(pool.noise.z) - 1;
-    // Grid coordinates: vertex (i, j) at (i, j), the pool's -x, -z corner at 0.
-    float scale = 0.5f * float(cells) / pool.box.x;
+    float scale = poolFloorGridScale(pool);
     vec2 g0 = (vec2(origin.x, origin.z) + pool.box.x) * scale;
     vec2 dg = vec2(dir.x, dir.z) * scale;
     vec2 gIn = g0 + sIn * dg;

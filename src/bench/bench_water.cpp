@@ -64,8 +64,8 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
   const scene::Scene placed = scene::sceneAt(s, time);
   const render::ReferenceScene exact(below, placed.spheres);
   const shader::SceneObjects objects = render::sceneObjects(placed);
-  const shader::PoolParams pool = render::poolParams(s);
-  const std::vector<glm::vec4> floorVertices = render::poolFloorVertices(pool);
+  const render::PoolModel poolModel = render::poolModel(s);
+  const shader::PoolParams& pool = poolModel.params;
   const auto u = render::frameUniforms(s, aov.width, aov.height);
   double accurate = 0.0, apparent = 0.0;
   size_t count = 0;
@@ -80,7 +80,7 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
     if (!truth.hit()) continue;
     const glm::vec2 truePixel = shader::screenPixel(u, p + truth.distance * t);
 
-    const shader::PoolHit cast = shader::tracePool(pool, p, t, floorVertices.data());
+    const shader::PoolHit cast = shader::tracePool(pool, p, t, poolModel.floorVertices.data());
     const shader::ObjectHit object =
         shader::castObjects(objects, glm::uvec2(objects.count.z, objects.count.w), p, t, cast.distance);
     const float distance = object.distance > 0.0f ? object.distance : cast.distance;

@@ -74,8 +74,9 @@ class Tracer {
         absorption_(scene.water.absorption),
         ior_(scene.water.ior) {
     if (hasPool(scene)) {
-      pool_ = poolParams(scene);
-      floorVertices_ = poolFloorVertices(pool_);
+      PoolModel pool = poolModel(scene);
+      pool_ = pool.params;
+      floorVertices_ = std::move(pool.floorVertices);
     }
     // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
     if (hasGlossySurface(scene))

@@ -16,13 +16,14 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
     : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
       floor_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {
-  const shader::PoolParams pool = poolParams(scene);
+  const PoolModel model = poolModel(scene);
+  const shader::PoolParams& pool = model.params;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "pool uniforms");
   const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
   floorIndices_ = gpu::createFilledBuffer(ctx, floorGridIndices, vk::BufferUsageFlagBits::eIndexBuffer,
                                           gpu::MemoryUse::Device, "pool floor indices");
-  floorVertices_ = gpu::createFilledBuffer(ctx, poolFloorVertices(pool), vk::BufferUsageFlagBits::eStorageBuffer,
+  floorVertices_ = gpu::createFilledBuffer(ctx, model.floorVertices, vk::BufferUsageFlagBits::eStorageBuffer,
                                            gpu::MemoryUse::Device, "pool floor vertices");
   // Filled by the renderer before each frame: the spheres may move.
   objectUniforms_ = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,

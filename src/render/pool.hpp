@@ -24,7 +24,7 @@ struct PoolDraw {
   const gpu::Buffer* floorIndices = nullptr;
   uint32_t floorIndexCount = 0;
   uint32_t floorGrid = 0;                      // vertices per side
-  const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (poolFloorVertices)
+  const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (PoolModel::floorVertices)
   GraphImage caustics;
 };
 

@@ -1,26 +1,18 @@
 #include "shading/pool_model.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "shared/shading.h"
 
 namespace tp::render {
 
-std::vector<glm::vec4> poolFloorVertices(const shader::PoolParams& pool) {
-  std::vector<glm::vec4> vertices;
-  vertices.reserve(size_t(kPoolFloorGrid) * kPoolFloorGrid);
-  for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
-    for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
-      const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
-      const glm::vec2 xz = (uv * 2.0f - 1.0f) * pool.box.x;
-      vertices.emplace_back(shader::poolFloorNormal(pool, xz, shader::kPoolFloorNormalSpacing),
-                            shader::poolFloorHeight(pool, xz));
-    }
-  }
-  return vertices;
+glm::vec2 poolFloorVertexXz(const shader::PoolParams& pool, uint32_t i, uint32_t j) {
+  const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
+  return (uv * 2.0f - 1.0f) * pool.box.x;
 }
 
-shader::PoolParams poolParams(const scene::Scene& scene) {
+PoolModel poolModel(const scene::Scene& scene) {
   const scene::Pool& p = scene.pool;
   const scene::Terrain& t = scene.terrain;
   shader::PoolParams params{
@@ -38,14 +30,24 @@ shader::PoolParams poolParams(const scene::Scene& scene) {
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
       .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
   };
+  std::vector<glm::vec4> vertices;
+  vertices.reserve(size_t(kPoolFloorGrid) * kPoolFloorGrid);
+  for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
+    for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
+      const glm::vec2 xz = poolFloorVertexXz(params, i, j);
+      vertices.emplace_back(shader::poolFloorNormal(params, xz, shader::kPoolFloorNormalSpacing),
+                            shader::poolFloorHeight(params, xz));
+    }
+  }
   // The slab the floor mesh lies in, where the water's rays walk its cells.
-  const std::vector<glm::vec4> vertices = poolFloorVertices(params);
   params.terrain.z = params.terrain.w = vertices.front().w;
   for (const glm::vec4& v : vertices) {
     params.terrain.z = std::min(params.terrain.z, v.w);
     params.terrain.w = std::max(params.terrain.w, v.w);
   }
-  return params;
+  return {params, std::move(vertices)};
 }
+
+shader::PoolParams poolParams(const scene::Scene& scene) { return poolModel(scene).params; }
 
 }  // namespace tp::render

@@ -89,7 +89,8 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
   }
   meshes.push_back(std::move(ground));
   if (hasPool(scene)) {
-    const shader::PoolParams p = poolParams(scene);
+    const PoolModel pool = poolModel(scene);
+    const shader::PoolParams& p = pool.params;
     const float s = p.box.x, top = p.box.y, bottom = shader::poolBottom(p);
     scene::Mesh walls{"pool_walls", {}, {}};
     addQuad(walls, {-s, top, -s}, {-s, bottom, -s}, {s, bottom, -s}, {s, top, -s});
@@ -99,12 +100,10 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
     meshes.push_back(std::move(walls));
     // As pool_floor.vert draws it: the same grid and the same height function, bit for bit.
     scene::Mesh floor{"pool_floor", {}, waterGridIndices(kPoolFloorGrid)};
-    const std::vector<glm::vec4> vertices = poolFloorVertices(p);
     for (uint32_t j = 0; j < kPoolFloorGrid; ++j) {
       for (uint32_t i = 0; i < kPoolFloorGrid; ++i) {
-        const glm::vec2 uv = glm::vec2(float(i), float(j)) / float(kPoolFloorGrid - 1);
-        const glm::vec2 xz = (uv * 2.0f - 1.0f) * s;
-        floor.positions.push_back({xz.x, vertices[size_t(j) * kPoolFloorGrid + i].w, xz.y});
+        const glm::vec2 xz = poolFloorVertexXz(p, i, j);
+        floor.positions.push_back({xz.x, pool.floorVertices[size_t(j) * kPoolFloorGrid + i].w, xz.y});
       }
     }
     meshes.push_back(std::move(floor));
