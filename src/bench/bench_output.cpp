@@ -1,7 +1,5 @@
 #include "bench/bench_output.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -36,11 +34,6 @@ Resolution parseResolution(const std::string& text, const std::string& bench) {
     throw std::runtime_error(bench + ": resolution '" + text + "' is not WxH with sides 8 to 4096");
   }
   return {w, h};
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values.empty() ? std::nan("") : values[values.size() / 2];
 }
 
 std::string formatNumber(const char* format, double x) {

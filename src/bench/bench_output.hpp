@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "base/median.hpp"
+
 namespace tp::base {
 class AtomicFile;
 }
@@ -25,8 +27,8 @@ struct Resolution {
 };
 Resolution parseResolution(const std::string& text, const std::string& bench);
 
-// The median of timed repeats (NaN for none).
-double median(std::vector<double> values);
+// The median of timed repeats (base::median).
+using base::median;
 
 // One CSV or table cell: x printed with a printf format.
 std::string formatNumber(const char* format, double x);

@@ -1,5 +1,7 @@
 #include "viewer/resolution_governor.hpp"
 
+#include "base/median.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -27,9 +29,7 @@ bool ResolutionGovernor::frameShown(double seconds) {
   }
   times_.push_back(seconds);
   if (times_.size() < settings_.window) return false;
-  std::vector<double> sorted = times_;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
+  const double median = base::median(times_);
   times_.clear();
   const bool slow = median > settings_.shrink * budget_;
   const bool fast = median < settings_.grow * budget_ && scale_ < 1.0;

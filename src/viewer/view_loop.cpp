@@ -10,6 +10,7 @@
 #include <string>
 
 #include "base/atomic_file.hpp"
+#include "base/median.hpp"
 #include "cli/gpu_session.hpp"
 #include "cli/profile_table.hpp"
 #include "io/image_io.hpp"
@@ -287,9 +288,7 @@ int runViewer(const ViewConfig& config) {
   const ViewStats stats = showFrames(session.context(), window, config, last);
   const double perFrame = stats.framesShown > 0 ? 1000.0 / stats.framesShown : 0.0;
   const double steadyFps = stats.secondsAfterFirst > 0.0 ? (stats.framesShown - 1) / stats.secondsAfterFirst : 0.0;
-  std::vector<double> intervals = stats.intervals;
-  std::sort(intervals.begin(), intervals.end());
-  const double medianFps = intervals.empty() ? 0.0 : 1.0 / intervals[intervals.size() / 2];
+  const double medianFps = stats.intervals.empty() ? 0.0 : 1.0 / base::median(stats.intervals);
   std::printf(
       "view: %u frames at %ux%u in %.2f s, %.2f fps, %.2f after the first, %.2f median (render %.1f ms, show %.1f "
       "ms per frame) on %s; window %ux%u, swapchain recreations: %u; last frame number %u\n",
