@@ -234,13 +234,13 @@ const scene::Scene& sameWater(const scene::Scene& previous, const scene::Scene& 
 Renderer::Renderer(GoOnFrom from) : Renderer(from, from.previous.scene_) {}
 
 Renderer::Renderer(GoOnFrom from, uint32_t width, uint32_t height)
-    : Renderer(from.previous.ctx_, from.previous.scene_, width, height, from.previous.options_) {
-  if (res_->water) res_->water->goOnFrom(*from.previous.res_->water);
-}
+    : Renderer(from, from.previous.scene_, width, height) {}
 
 Renderer::Renderer(GoOnFrom from, const scene::Scene& scene)
-    : Renderer(from.previous.ctx_, sameWater(from.previous.scene_, scene), from.previous.width_, from.previous.height_,
-               from.previous.options_) {
+    : Renderer(from, scene, from.previous.width_, from.previous.height_) {}
+
+Renderer::Renderer(GoOnFrom from, const scene::Scene& scene, uint32_t width, uint32_t height)
+    : Renderer(from.previous.ctx_, sameWater(from.previous.scene_, scene), width, height, from.previous.options_) {
   if (res_->water) res_->water->goOnFrom(*from.previous.res_->water);
 }
 

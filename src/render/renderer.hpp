@@ -153,6 +153,8 @@ class Renderer {
 
  private:
   struct Resources;
+  // What the two public ways of going on from a renderer come to.
+  Renderer(GoOnFrom from, const scene::Scene& scene, uint32_t width, uint32_t height);
   const gpu::Context& ctx_;
   scene::Scene scene_;
   uint32_t width_, height_;
