@@ -18,7 +18,7 @@ add_library(tidepool_cpu STATIC
   src/base/text_file.cpp src/base/atomic_file.cpp src/base/background_work.cpp src/base/median.cpp
   src/io/image_io.cpp
   src/sim/water_state.cpp src/io/water_state_file.cpp src/sim/water_params.cpp src/sim/cpu_stepper.cpp src/sim/reference_sim.cpp
-  src/sim/exact_mode.cpp
+  src/sim/exact_mode.cpp src/sim/wake_measures.cpp
   src/viewer/camera_controller.cpp src/viewer/water_pick.cpp src/viewer/resolution_governor.cpp
   src/cli/frame_sequence.cpp)
 target_include_directories(tidepool_cpu PUBLIC src shaders_glsl)
@@ -57,7 +57,8 @@ find_package(GTest REQUIRED)
 include(GoogleTest)
 add_executable(tidepool_cpu_tests
   tests/scene_file_test.cpp tests/sim_cpu_test.cpp tests/camera_controller_test.cpp tests/water_pick_test.cpp
-  tests/resolution_governor_test.cpp tests/background_work_test.cpp)
+  tests/resolution_governor_test.cpp tests/background_work_test.cpp tests/sphere_column_test.cpp
+  tests/wake_measures_test.cpp)
 target_link_libraries(tidepool_cpu_tests PRIVATE tidepool_cpu GTest::gtest GTest::gtest_main)
 target_compile_definitions(tidepool_cpu_tests PRIVATE
   TIDEPOOL_EXE="/bin/false"  # process.hpp's runner; these suites do not run the executable

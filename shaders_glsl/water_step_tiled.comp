@@ -48,8 +48,11 @@ void main() {
     vec2 uv = vec2(0.0);
     if (updating) {
       const int self = l.y * TILE + l.x;
-      uv = waterUpdate(params, su[self], sv[self], su[west.y * TILE + west.x], su[east.y * TILE + east.x],
-                       su[south.y * TILE + south.x], su[north.y * TILE + north.x]);
+      const int iW = west.y * TILE + west.x, iE = east.y * TILE + east.x;
+      const int iS = south.y * TILE + south.x, iN = north.y * TILE + north.x;
+      const bool atWall = g.x == 0 || g.y == 0 || g.x == n - 1 || g.y == n - 1;
+      uv = waterUpdate(params, su[self], sv[self], vec4(su[iW], su[iE], su[iS], su[iN]),
+                       vec4(sv[iW], sv[iE], sv[iS], sv[iN]), atWall);
     }
     barrier();
     if (updating) {

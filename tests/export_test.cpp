@@ -10,6 +10,7 @@
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "sim/reference_sim.hpp"
+#include "sim/wake_measures.hpp"
 #include "sim_support.hpp"
 
 namespace tp::test {
@@ -65,7 +66,7 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
 
   // The water's heights against the double-precision reference run for the
   // same frames (float32 round-off over a few steps).
-  sim::ReferenceSim reference(sim::waterParams(s.water), sim::waterInitialState(s.water));
+  sim::ReferenceSim reference(sim::waterParams(s), sim::waterInitialState(s.water));
   reference.steps(uint64_t(kFrame) * sim::waterSubsteps(s.water), sim::waterStep(s.water));
   double worst = 0.0, moved = 0.0;
   for (size_t k = 0; k < size_t(n) * n; ++k) {
@@ -119,8 +120,8 @@ TEST(ExportCli, BadOutputsFailCleanly) {
             std::string::npos);
 }
 
-// A sphere moving down into calm water along its path pushes out exactly the
-// volume it comes to occupy below the rest level (as the grid samples it), and
+// A sphere moving down into calm water along its path raises the surface by
+// exactly the volume it comes to occupy below the rest level (the cap's), and
 // the export puts it where the path says at the frame's time.
 TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   ScratchDir dir;
@@ -147,16 +148,16 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
     ASSERT_NEAR(glm::length(c.vertices[k] - center), s.spheres[0].radius, 1e-5f);
   }
 
-  // Volume the sphere occupies below the rest level, column by column.
+  // Volume the sphere occupies below the rest level (it is inside the grid).
   const double h = s.water.extent / n;
-  const double submerged = submergedVolume(n, s.water.extent, s.water.level, center, s.spheres[0].radius);
+  const double submerged = sim::sphereCapVolume(s.spheres[0].radius, center.y, s.water.level);
   double waterChange = 0.0;
   for (uint32_t j = 0; j < n; ++j) {
     for (uint32_t i = 0; i < n; ++i)
       waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
-  EXPECT_NEAR(waterChange, -submerged, 1e-3 * submerged);
+  EXPECT_NEAR(waterChange, submerged, 1e-3 * submerged);
 }
 
 }  // namespace tp::test

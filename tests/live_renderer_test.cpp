@@ -11,6 +11,7 @@
 #include "scene/scene_file.hpp"
 #include "shading/water_model.hpp"
 #include "sim/gpu_stepper.hpp"
+#include "sim/wake_measures.hpp"
 #include "sim/water_sleep.hpp"
 #include "sim_support.hpp"
 
@@ -73,8 +74,9 @@ TEST_F(LiveRendererTest, MovedCameraDrawsWhatARendererMadeForItDraws) {
 }
 
 // A sphere dragged deeper into calm, sleeping water wakes it; the water after
-// the next frame is, to the bit, a stepper's given the same displacement and
-// steps; and the water's volume fell by the volume the sphere newly occupies.
+// the next frame is, to the bit, a stepper's given the same displacement in
+// equal pieces, one before each substep; and the surface rose by the volume
+// the sphere newly occupies.
 TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
   scene::Scene s = scene::defaultScene();
   s.water.drops.clear();
@@ -88,21 +90,27 @@ TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
   const sim::WaterState water = renderer.waterState();
 
   const uint32_t substeps = sim::waterSubsteps(s.water);
-  sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
-                          sim::StepKernel::OnePerDispatch);
-  stepper.moveSphere(sim::worldToGrid(s.water, from), sim::worldToGrid(s.water, to), s.spheres[0].radius,
-                     s.water.level);
-  stepper.step(substeps, sim::waterStep(s.water));
+  sim::GpuStepper stepper(ctx(), sim::waterParams(s), sim::waterInitialState(s.water), sim::StepKernel::OnePerDispatch);
+  ASSERT_GT(substeps, 1u);
+  const auto at = [&](uint32_t k) {
+    return sim::worldToGrid(s.water, k == 0          ? from
+                                     : k == substeps ? to
+                                                     : glm::mix(from, to, float(double(k) / substeps)));
+  };
+  for (uint32_t k = 0; k < substeps; ++k) {
+    stepper.moveSphere(at(k), at(k + 1), s.spheres[0].radius, s.water.level);
+    stepper.step(1, sim::waterStep(s.water));
+  }
   const sim::WaterState expected = stepper.download();
   EXPECT_TRUE(water.u == expected.u);
   EXPECT_TRUE(water.v == expected.v);
 
   const uint32_t n = s.water.grid;
   const double h = double(s.water.extent) / n;
-  const double pushedIn = submergedVolume(n, s.water.extent, s.water.level, to, s.spheres[0].radius) -
-                          submergedVolume(n, s.water.extent, s.water.level, from, s.spheres[0].radius);
+  const double pushedIn = sim::sphereCapVolume(s.spheres[0].radius, to.y, s.water.level) -
+                          sim::sphereCapVolume(s.spheres[0].radius, from.y, s.water.level);
   EXPECT_GT(pushedIn, 0.02);
-  EXPECT_NEAR(volumeOf(water, h) - volumeOf(sim::waterInitialState(s.water), h), -pushedIn, 1e-3 * pushedIn);
+  EXPECT_NEAR(volumeOf(water, h) - volumeOf(sim::waterInitialState(s.water), h), pushedIn, 1e-3 * pushedIn);
 
   EXPECT_THROW(renderer.moveSphere(1, to), std::out_of_range);
 }
@@ -127,10 +135,11 @@ TEST_F(LiveRendererTest, NewWaterDynamicsGoOnFromTheState) {
   EXPECT_EQ(renderer.scene().water, w);
   renderer.render({.frame = 4});
   renderer.render({.frame = 5});
-  sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
-                          sim::StepKernel::OnePerDispatch);
+  sim::GpuStepper stepper(ctx(), sim::waterParams(s), sim::waterInitialState(s.water), sim::StepKernel::OnePerDispatch);
   stepper.step(3 * before, sim::waterStep(s.water));
-  stepper.setParams(sim::waterParams(w));
+  scene::Scene withW = s;
+  withW.water = w;
+  stepper.setParams(sim::waterParams(withW));
   stepper.step(2 * after, sim::waterStep(w));
   const sim::WaterState expected = stepper.download(), water = renderer.waterState();
   EXPECT_TRUE(water.u == expected.u);
@@ -232,7 +241,7 @@ TEST_F(LiveRendererTest, AScheduledDropWakesSleepingWater) {
     EXPECT_TRUE(a.rgba == b.rgba);
     if (frame == kDropFrame) {
       const uint32_t substeps = sim::waterSubsteps(s.water);
-      sim::GpuStepper stepper(ctx(), sim::waterParams(s.water), sim::waterInitialState(s.water),
+      sim::GpuStepper stepper(ctx(), sim::waterParams(s), sim::waterInitialState(s.water),
                               sim::StepKernel::OnePerDispatch);
       stepper.step(uint64_t(kDropFrame - 1) * substeps, sim::waterStep(s.water));
       const glm::vec3 centre = sim::worldToGrid(s.water, {kFirstDrop.x, 0.0f, kFirstDrop.z});

@@ -143,6 +143,57 @@ TEST(SimParams, SubstepsAreTheFewestWithinTheMargin) {
   EXPECT_THROW(sim::substepsFor(p, -1.0), std::runtime_error);
 }
 
+// The grid damping's bound, 8 d lambda^2 + 16 kappa dt <= 2 + 2 d, is sharp:
+// the checkerboard (the mode it binds on, sigma = 8 on an even periodic grid)
+// stays bounded over 10^4 steps just inside it (within the scheme's transient
+// growth, 27x at lambda 0.7) and grows past a thousandfold just outside, in
+// the double-precision reference (written apart from the bound).
+TEST(SimParams, GridDampingBoundIsSharpOnTheCheckerboard) {
+  for (const double lambda : {0.2, 0.5, 0.7}) {
+    for (const double damping : {0.0, 3.0}) {
+      sim::WaterParams p{.n = 16, .extent = 1.0, .waveSpeed = 1.0, .damping = damping, .boundary = sim::Boundary::Wrap};
+      const double dt = lambda * p.h() / p.waveSpeed;
+      sim::WaterState checkerboard = sim::flatState(p.n);
+      for (uint32_t j = 0; j < p.n; ++j) {
+        for (uint32_t i = 0; i < p.n; ++i) checkerboard.u[size_t(j) * p.n + i] = (i + j) % 2 ? 1e-3f : -1e-3f;
+      }
+      for (const double fraction : {0.98, 1.03}) {
+        p.gridDamping = fraction * sim::gridDampingBound(p, dt) / dt;
+        sim::ReferenceSim reference(p, checkerboard);
+        reference.steps(10000, dt);
+        double largest = 0.0;
+        for (double u : reference.u()) largest = std::max(largest, std::abs(u));
+        SCOPED_TRACE("lambda " + std::to_string(lambda) + ", gamma " + std::to_string(damping) + ", fraction " +
+                     std::to_string(fraction));
+        if (fraction < 1.0) {
+          EXPECT_LT(largest, 0.1);
+          EXPECT_NO_THROW(sim::checkStable(p, dt));
+        } else {
+          EXPECT_FALSE(largest < 1.0);
+          EXPECT_THROW(sim::checkStable(p, dt), std::runtime_error);
+        }
+      }
+    }
+  }
+}
+
+// Substeps for the grid damping: enough that kappa dt is within 0.9 of its
+// bound, and one fewer would not be.
+TEST(SimParams, SubstepsKeepTheGridDampingWithinItsBound) {
+  sim::WaterParams p{.n = 128, .extent = 4.0, .waveSpeed = 0.6, .damping = 0.3};
+  for (const double kappa : {0.0, 5.0, 50.0, 500.0}) {
+    p.gridDamping = kappa;
+    const double frame = 1.0 / 30.0;
+    const uint32_t k = sim::substepsFor(p, frame, 0.9);
+    EXPECT_LE(kappa * frame / k, 0.9 * sim::gridDampingBound(p, frame / k)) << kappa;
+    if (k > 2) {  // two keep lambda within its bound on this grid
+      EXPECT_GT(kappa * frame / (k - 1), 0.9 * sim::gridDampingBound(p, frame / (k - 1))) << kappa;
+    }
+  }
+  p.gridDamping = 2.0;
+  EXPECT_EQ(sim::substepsFor(p, 1.0 / 30.0), 2u);  // the default scene: no more substeps than without it
+}
+
 TEST(SimParams, ImpossibleParametersAreRefused) {
   auto refused = [](sim::WaterParams p) { EXPECT_THROW(sim::validate(p), std::runtime_error); };
   refused({.n = 0});
@@ -152,6 +203,8 @@ TEST(SimParams, ImpossibleParametersAreRefused) {
   refused({.waveSpeed = -1.0});
   refused({.damping = -0.1});
   refused({.maxSlope = std::numeric_limits<double>::infinity()});
+  refused({.gridDamping = -1.0});
+  refused({.gridDamping = std::nan("")});
   EXPECT_NO_THROW(sim::validate(sim::WaterParams{}));
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <limits>
 #include <random>
 
 #include "sim/water_state.hpp"
@@ -24,28 +25,21 @@ inline double maxAbsDifference(const std::vector<float>& a, const std::vector<do
   return worst;
 }
 
+// The highest height of the cells along the grid's edge (the pool's walls).
+inline double highestAlongTheWalls(const std::vector<float>& u, uint32_t n) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      if (i == 0 || j == 0 || i == n - 1 || j == n - 1) top = std::max(top, double(u[size_t(j) * n + i]));
+    }
+  }
+  return top;
+}
+
 inline double volumeOf(const sim::WaterState& s, double h) {
   double sum = 0.0;
   for (float u : s.u) sum += u;
   return sum * h * h;
-}
-
-// The volume a sphere occupies below the rest level `level`, summed column by
-// column over the cell centres of an n x n grid of side `extent` centred on
-// the origin: what the sphere displacement moves out of the water.
-inline double submergedVolume(uint32_t n, double extent, double level, glm::dvec3 center, double radius) {
-  const double h = extent / n, half = 0.5 * extent;
-  double volume = 0.0;
-  for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) {
-      const double x = (i + 0.5) * h - half, z = (j + 0.5) * h - half;
-      const double r2 = radius * radius - (x - center.x) * (x - center.x) - (z - center.z) * (z - center.z);
-      if (r2 <= 0.0) continue;
-      const double chordHalf = std::sqrt(r2);
-      volume += std::max(0.0, std::min(center.y + chordHalf, level) - (center.y - chordHalf)) * h * h;
-    }
-  }
-  return volume;
 }
 
 }  // namespace tp::test

@@ -14,7 +14,10 @@ vec4 waterStepCell(WaterStepParams params, ivec2 p) {
   const int south = waterNeighbour(p.y - 1, n, params.boundary) * n + p.x;
   const int north = waterNeighbour(p.y + 1, n, params.boundary) * n + p.x;
   const vec4 cell = src[row + p.x];
-  const vec2 uv = waterUpdate(params, cell.y, cell.w, src[west].y, src[east].y, src[south].y, src[north].y);
+  const vec4 w = src[west], e = src[east], s = src[south], nn = src[north];
+  const bool atWall = p.x == 0 || p.y == 0 || p.x == n - 1 || p.y == n - 1;
+  const vec2 uv =
+      waterUpdate(params, cell.y, cell.w, vec4(w.y, e.y, s.y, nn.y), vec4(w.w, e.w, s.w, nn.w), atWall);
   return vec4(cell.x, uv.x, cell.z, uv.y);
 }
 

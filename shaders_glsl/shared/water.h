@@ -35,6 +35,10 @@ struct WaterStepParams {
   float waveFactor;  // dt * c^2 / h^2
   float damping;     // exp(-gamma * dt), the per-step velocity factor
   float maxOffset;   // maxSlope * h: bound on u minus its 4-neighbour average; <= 0: off
+  float gridDamping; // kappa * dt: v gains this times the sum of its differences to its 4 neighbours
+  float spillHeight; // clamp boundary: a cell along a wall higher than this spills down to it
+  uint pad1;
+  uint pad2;
 };
 
 // Push constants of water_drop.comp: adds amplitude * (1 + cos(pi r / radius)) / 2
@@ -50,9 +54,9 @@ struct WaterDropParams {
 };
 
 // Push constants of water_sphere.comp: a sphere moving from one centre to
-// another pushes water out and lets it back, column by column: u changes by
-// the length of the sphere's vertical chord below the rest level that it
-// leaves minus the length it enters.
+// another raises and lowers the surface column by column: u changes by the
+// sphere's volume below the rest level within the column's square where it
+// goes minus where it was (shared/sphere_column.h), over the square's area.
 struct WaterSphereParams {
   vec4 oldCenter;  // xyz, w: radius
   vec4 newCenter;  // xyz, w: rest level of the water surface
@@ -126,12 +130,12 @@ static_assert(offsetof(tp::shader::WaterCell, x) == 0);
 static_assert(offsetof(tp::shader::WaterCell, u) == 4);
 static_assert(offsetof(tp::shader::WaterCell, z) == 8);
 static_assert(offsetof(tp::shader::WaterCell, v) == 12);
-static_assert(sizeof(tp::shader::WaterStepParams) == 32);
+static_assert(sizeof(tp::shader::WaterStepParams) == 48);
 static_assert(sizeof(tp::shader::WaterDropParams) == 32);
 static_assert(sizeof(tp::shader::WaterSphereParams) == 48);
 static_assert(sizeof(tp::shader::WaterStatsParams) == 32);
-static_assert(sizeof(tp::shader::WaterTileStepParams) == 48);
-static_assert(offsetof(tp::shader::WaterTileStepParams, stepIndex) == 32);
+static_assert(sizeof(tp::shader::WaterTileStepParams) == 64);
+static_assert(offsetof(tp::shader::WaterTileStepParams, stepIndex) == 48);
 static_assert(sizeof(tp::shader::WaterTileListParams) == 16);
 static_assert(sizeof(tp::shader::WaterTileCounters) == 32);
 static_assert(offsetof(tp::shader::WaterTileCounters, totalLow) == 12);

@@ -12,13 +12,17 @@ void addOutputOptions(CLI::App* cmd, std::string& csv, std::string& plot) {
   cmd->add_option("--plot", plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
 }
 
+// A comma-separated list option with its default shown and each value checked.
+template <typename T, typename Check>
+CLI::Option* addListOption(CLI::App* cmd, const std::string& name, std::vector<T>& values, const std::string& help,
+                           Check check) {
+  return cmd->add_option(name, values, help)->delimiter(',')->capture_default_str()->check(check);
+}
+
 void addSimBench(CLI::App* bench, BenchSimOptions& o) {
   CLI::App* sim = bench->add_subcommand(
       "sim", "Water stepper: GPU (one step per dispatch, tiled) against an OpenMP C++ loop, cells/s and error");
-  sim->add_option("--sizes", o.sizes, "Grid sides to measure")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(16u, 8192u));
+  addListOption(sim, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 8192u));
   addOutputOptions(sim, o.csv, o.plot);
   sim->add_option("--min-time", o.minTime, "Seconds measured per case")
       ->capture_default_str()
@@ -30,14 +34,8 @@ void addTilesBench(CLI::App* bench, BenchTilesOptions& o) {
   CLI::App* tiles = bench->add_subcommand("tiles",
                                           "Water stepper on active tiles: ms per step over all tiles, over the active "
                                           "list and with the one-step kernel, against the fraction of tiles active");
-  tiles->add_option("--sizes", o.sizes, "Grid sides to measure")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(16u, 8192u));
-  tiles->add_option("--radii", o.radii, "Drop radii as fractions of the side (0: calm water)")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 2.0));
+  addListOption(tiles, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 8192u));
+  addListOption(tiles, "--radii", o.radii, "Drop radii as fractions of the side (0: calm water)", CLI::Range(0.0, 2.0));
   tiles->add_option("--steps", o.steps, "Steps per timed submission, right after the drop")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
@@ -46,6 +44,18 @@ void addTilesBench(CLI::App* bench, BenchTilesOptions& o) {
       ->check(CLI::Range(1u, 1000u));
   addOutputOptions(tiles, o.csv, o.plot);
   addGpuOptions(tiles, o.validate, o.device);
+}
+
+void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
+  CLI::App* wake = bench->add_subcommand(
+      "wake",
+      "A sphere crossing the pool: high-wavenumber share, steepest slope and crest of its wake against ms per step");
+  addListOption(wake, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 2048u));
+  addListOption(wake, "--speeds", o.speeds, "Sphere speeds as fractions of the wave speed", CLI::Range(0.05, 2.0));
+  addListOption(wake, "--grid-dampings", o.gridDampings, "Grid damping kappa values in 1/s to compare",
+                CLI::Range(0.0, 1e4));
+  addOutputOptions(wake, o.csv, o.plot);
+  addGpuOptions(wake, o.validate, o.device);
 }
 
 void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
@@ -128,10 +138,7 @@ void addIblBench(CLI::App* bench, BenchIblOptions& o) {
   ibl->add_option("--width", o.width, "Environment texels across (even; height is half)")
       ->capture_default_str()
       ->check(CLI::Range(16u, 8192u));
-  ibl->add_option("--samples", o.samples, "Sample counts to measure")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(1u, 1u << 22));
+  addListOption(ibl, "--samples", o.samples, "Sample counts to measure", CLI::Range(1u, 1u << 22));
   ibl->add_option("--rotations", o.rotations, "Independent sample sets per case (errors: RMS over them)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
@@ -163,10 +170,7 @@ void addGlassBench(CLI::App* bench, BenchGlassOptions& o) {
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
   glass->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
-  glass->add_option("--steps", o.steps, "Binary-search steps to measure, each 1 to 64")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::Range(1u, 64u));
+  addListOption(glass, "--steps", o.steps, "Binary-search steps to measure, each 1 to 64", CLI::Range(1u, 64u));
   glass->add_option("--samples", o.samples, "Samples per pixel of the reference")
       ->capture_default_str()
       ->check(CLI::Range(1u, 4096u));
@@ -184,6 +188,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   bench->require_subcommand(1);
   addSimBench(bench, o.sim);
   addTilesBench(bench, o.tiles);
+  addWakeBench(bench, o.wake);
   addWaterBench(bench, o.water);
   addSsaoBench(bench, o.ssao);
   addFrameBench(bench, o.frame);
@@ -196,6 +201,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
 int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("sim")->parsed()) return runBenchSim(o.sim);
   if (bench->get_subcommand("tiles")->parsed()) return runBenchTiles(o.tiles);
+  if (bench->get_subcommand("wake")->parsed()) return runBenchWake(o.wake);
   if (bench->get_subcommand("water")->parsed()) return runBenchWater(o.water);
   if (bench->get_subcommand("ssao")->parsed()) return runBenchSsao(o.ssao);
   if (bench->get_subcommand("frame")->parsed()) return runBenchFrame(o.frame);

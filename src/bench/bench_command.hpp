@@ -8,6 +8,7 @@
 #include "bench/bench_sim.hpp"
 #include "bench/bench_ssao.hpp"
 #include "bench/bench_tiles.hpp"
+#include "bench/bench_wake.hpp"
 #include "bench/bench_water.hpp"
 
 namespace tp::app {
@@ -21,9 +22,10 @@ struct BenchOptions {
   BenchPassesOptions passes;
   BenchIblOptions ibl;
   BenchGlassOptions glass;
+  BenchWakeOptions wake;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, tiles, water, ssao, frame, passes, ibl, glass).
+// Adds `tidepool bench` with its subcommands (sim, tiles, wake, water, ssao, frame, passes, ibl, glass).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 

@@ -29,6 +29,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   dt->excludes(frame);
   cmd->add_option("--wave-speed", o.waveSpeed, "Wave speed c in m/s")->capture_default_str();
   cmd->add_option("--damping", o.damping, "Damping rate gamma in 1/s")->capture_default_str();
+  cmd->add_option("--grid-damping", o.gridDamping, "Damping kappa of the shortest waves in 1/s")->capture_default_str();
   cmd->add_option("--boundary", o.boundary, "clamp (reflective walls) or wrap (periodic)")
       ->capture_default_str()
       ->check(CLI::IsMember({"clamp", "wrap"}));
@@ -67,7 +68,8 @@ int runSim(const CLI::App& command, const SimOptions& o) {
                           .damping = o.damping,
                           .boundary = sim::parseBoundary(o.boundary),
                           .maxSlope = o.maxSlope,
-                          .scheme = sim::parseScheme(o.scheme)};
+                          .scheme = sim::parseScheme(o.scheme),
+                          .gridDamping = o.gridDamping};
   const bool fromFile = o.init.rfind("drop:", 0) != 0 && o.init.rfind("mode:", 0) != 0;
   if (fromFile && command.count("--grid") == 0) params.n = 0;  // take the file's size
   if (params.n != 0) sim::validate(params);

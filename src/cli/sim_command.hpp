@@ -12,6 +12,7 @@ struct SimOptions {
   double frameTime = 1.0 / 60.0;
   double waveSpeed = 0.5;
   double damping = 0.0;
+  double gridDamping = 0.0;
   std::string boundary = "clamp";
   double maxSlope = 0.0;
   std::string scheme = "symplectic";

@@ -131,6 +131,7 @@ void validateWater(const Scene& s) {
   requireRange(w.level, -1e4f, 1e4f, "water.level");
   requireRange(w.waveSpeed, 1e-6f, 1e4f, "water.wave_speed");
   requireRange(w.damping, 0.0f, 1e4f, "water.damping");
+  requireRange(w.gridDamping, 0.0f, 1e4f, "water.grid_damping");
   requireOneOf(w.boundary, choices::kBoundary, "water.boundary");
   requireRange(w.maxSlope, 0.0f, 1e4f, "water.max_slope");
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");

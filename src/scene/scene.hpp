@@ -158,6 +158,9 @@ struct Water {
   float level = -0.15f;  // rest height of the surface (the rim is the ground's height)
   float waveSpeed = 0.6f;
   float damping = 0.3f;  // 1/s
+  // 1/s: damps the shortest waves, which a moving sphere makes and which
+  // barely travel (sim::WaterParams::gridDamping, docs/water-numerics.md).
+  float gridDamping = 2.0f;
   std::string boundary = "clamp";
   float maxSlope = 0.0f;
   float frameTime = 1.0f / 30.0f;  // seconds of simulation per rendered frame

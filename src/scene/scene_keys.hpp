@@ -64,6 +64,7 @@ void visitWaterKeys(R& r, Water& x) {
   r.number("level", x.level);
   r.number("wave_speed", x.waveSpeed);
   r.number("damping", x.damping);
+  r.number("grid_damping", x.gridDamping);
   r.choice("boundary", x.boundary, choices::kBoundary);
   r.number("max_slope", x.maxSlope);
   r.number("frame_time", x.frameTime);

@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <xmmintrin.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tp::sim {
@@ -31,6 +32,8 @@ void CpuStepper::steps(uint64_t count, double dt) {
   const bool wrap = p_.boundary == Boundary::Wrap;
   const bool symplectic = p_.scheme == Scheme::Symplectic;
   const float maxOffset = float(p_.maxSlope * p_.h());
+  const float gridDamping = float(p_.gridDamping * dt);
+  const float spillHeight = float(p_.spillHeight);
   for (uint64_t s = 0; s < count; ++s) {
     const shader::WaterCell* __restrict src = a_.data();
     shader::WaterCell* __restrict dst = b_.data();
@@ -45,14 +48,20 @@ void CpuStepper::steps(uint64_t count, double dt) {
         const shader::WaterCell* rowS = src + size_t(jS) * n;
         const shader::WaterCell* rowN = src + size_t(jN) * n;
         shader::WaterCell* out = dst + size_t(j) * n;
+        const bool wallRow = !wrap && (j == 0 || j == n - 1);
         auto cell = [&](int i, int iW, int iE) {
           const float u = row[i].u, v = row[i].v;
           const float lap = ((row[iW].u - u) + (row[iE].u - u)) + ((rowS[i].u - u) + (rowN[i].u - u));
-          const float vNew = decay * (v + waveFactor * lap);
+          const float velocityLap = ((row[iW].v - v) + (row[iE].v - v)) + ((rowS[i].v - v) + (rowN[i].v - v));
+          float vNew = decay * (v + waveFactor * lap) + gridDamping * velocityLap;
           float uNew = u + fdt * (symplectic ? vNew : v);
           if (maxOffset > 0.0f) {
             const float offset = (uNew - u) - 0.25f * lap;
             if (std::abs(offset) > maxOffset) uNew = u + (0.25f * lap + std::copysign(maxOffset, offset));
+          }
+          if ((wallRow || (!wrap && (i == 0 || i == n - 1))) && uNew > spillHeight) {  // over the rim: spills
+            uNew = spillHeight;
+            vNew = std::min(vNew, 0.0f);
           }
           out[i] = {row[i].x, uNew, row[i].z, vNew};
         };

@@ -1,4 +1,6 @@
 #pragma once
+#include <cstdint>
+
 #include "sim/water_params.hpp"
 
 namespace tp::sim {
@@ -21,6 +23,10 @@ struct ExactMode {
   double discreteFactorFromZeroVelocity(double step) const;
   // u_n / u_0 after startAtRest(): cos(n theta).
   double discreteFactorAtRest(double step) const;
+  // u_n / u_0 after startAtRest() under any damping gamma and grid damping
+  // kappa: the step's 2x2 map of the mode's (u, v) applied n times in
+  // double. With both 0 it is discreteFactorAtRest().
+  double discreteFactorIterated(uint64_t steps) const;
   // The continuous mode's factor at t = step * dt: cos(omega t), omega = c pi sqrt(M^2 + N^2) / L.
   double continuousFactor(double step) const;
 };

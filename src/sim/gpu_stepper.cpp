@@ -27,6 +27,10 @@ shader::WaterStepParams stepParams(const WaterParams& p, double dt, uint32_t ste
       .waveFactor = float(dt * p.waveSpeed * p.waveSpeed / (h * h)),
       .damping = float(std::exp(-p.damping * dt)),
       .maxOffset = float(p.maxSlope * h),
+      .gridDamping = float(p.gridDamping * dt),
+      .spillHeight = float(p.spillHeight),
+      .pad1 = 0,
+      .pad2 = 0,
   };
 }
 

@@ -17,6 +17,7 @@ ReferenceSim::ReferenceSim(const WaterParams& params, const WaterState& initial)
 }
 
 double ReferenceSim::heightAt(long i, long j) const { return u_[cellIndex(i, j, p_.n, p_.boundary)]; }
+double ReferenceSim::velocityAt(long i, long j) const { return v_[cellIndex(i, j, p_.n, p_.boundary)]; }
 
 void ReferenceSim::step(double dt) {
   const long n = p_.n;
@@ -29,11 +30,19 @@ void ReferenceSim::step(double dt) {
       const size_t k = size_t(j) * n + size_t(i);
       const double average = 0.25 * (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1));
       const double laplacian = 4.0 * (average - u_[k]) / (h * h);
-      const double v = decay * (v_[k] + dt * c2 * laplacian);
+      const double velocityLaplacianH2 =
+          velocityAt(i - 1, j) + velocityAt(i + 1, j) + velocityAt(i, j - 1) + velocityAt(i, j + 1) - 4.0 * v_[k];
+      const double v = decay * (v_[k] + dt * c2 * laplacian) + p_.gridDamping * dt * velocityLaplacianH2;
       double u = u_[k] + dt * (p_.scheme == Scheme::Explicit ? v_[k] : v);
       if (maxOffset > 0.0) u = average + std::clamp(u - average, -maxOffset, maxOffset);
+      const bool atWall = i == 0 || j == 0 || i == n - 1 || j == n - 1;
+      double vKept = v;
+      if (atWall && p_.boundary == Boundary::Clamp && u > p_.spillHeight) {  // over the rim: spills
+        u = p_.spillHeight;
+        vKept = std::min(v, 0.0);
+      }
       nextU_[k] = u;
-      nextV_[k] = v;
+      nextV_[k] = vKept;
     }
   }
   std::swap(u_, nextU_);

@@ -23,6 +23,7 @@ class ReferenceSim {
 
  private:
   double heightAt(long i, long j) const;
+  double velocityAt(long i, long j) const;
 
   WaterParams p_;
   std::vector<double> u_, v_, nextU_, nextV_;

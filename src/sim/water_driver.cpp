@@ -36,8 +36,7 @@ const scene::Scene& checkedFits(const gpu::Context& ctx, const scene::Scene& sce
 }  // namespace
 
 WaterDriver::WaterDriver(const gpu::Context& ctx, const scene::Scene& scene, bool skipping)
-    : stepper_(ctx, waterParams(checkedFits(ctx, scene).water), waterInitialState(scene.water),
-               StepKernel::ActiveTiles),
+    : stepper_(ctx, waterParams(checkedFits(ctx, scene)), waterInitialState(scene.water), StepKernel::ActiveTiles),
       skipping_(skipping),
       sleep_(sleepRule(scene.water)) {
   if (!skipping) stepper_.setTileDispatch(TileDispatch::Full);
@@ -91,11 +90,7 @@ bool WaterDriver::plan(const scene::Scene& scene, uint32_t frame) {
 
 void WaterDriver::record(const vk::raii::CommandBuffer& cmd, const scene::Scene& scene) {
   for (const scene::Drop& d : pendingDrops_) recordSceneDrop(cmd, stepper_, scene.water, d);
-  for (const SphereMove& m : pendingMoves_) {
-    stepper_.recordSphereMove(cmd, worldToGrid(scene.water, m.from), worldToGrid(scene.water, m.to), m.radius,
-                              scene.water.level);
-  }
-  recordWaterRun(cmd, stepper_, scene, clock_, stepsDone_, stepsDone_ + pendingSteps_, dropsDue_);
+  recordWaterRun(cmd, stepper_, scene, clock_, stepsDone_, stepsDone_ + pendingSteps_, dropsDue_, pendingMoves_);
   stepper_.recordStats(cmd, waterStep(scene.water));
 }
 
@@ -134,7 +129,8 @@ void WaterDriver::moveSphere(glm::vec3 from, glm::vec3 to, float radius) {
 
 void WaterDriver::setDynamics(const scene::Water& water) {
   // Everything that can refuse the change, before any of it is made.
-  const WaterParams params = waterParams(water);
+  WaterParams params = waterParams(water);
+  params.spillHeight = stepper_.params().spillHeight;  // the rim stays where it is
   validate(params);
   const uint32_t substeps = waterSubsteps(water);
   // Re-base the clock at the frame the water has reached (a whole number of

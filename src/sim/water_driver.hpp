@@ -60,7 +60,7 @@ class WaterDriver {
   // come), applied at the start of the next simulation.
   void addDrop(scene::Water& water, const scene::Drop& drop);
   // A sphere moved by hand from `from` to `to`: its displacement of the water
-  // is applied before the next frame's steps.
+  // is divided over the next frame's steps (recordWaterRun).
   void moveSphere(glm::vec3 from, glm::vec3 to, float radius);
   // Scene time (seconds) the water has reached.
   double time(const scene::Water& water) const { return clock_.timeAt(stepsDone_, water); }
@@ -84,10 +84,6 @@ class WaterDriver {
   float top() const { return top_; }
 
  private:
-  struct SphereMove {
-    glm::vec3 from, to;
-    float radius;
-  };
   void restart(const scene::Scene& scene, const WaterStats& stats);
   void observe(const scene::Scene& scene, const WaterStats& stats);
 

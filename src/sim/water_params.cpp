@@ -27,6 +27,14 @@ void validate(const WaterParams& p) {
           "wave speed must be positive and finite, got " + fmt(p.waveSpeed));
   require(std::isfinite(p.damping) && p.damping >= 0.0, "damping must be >= 0 and finite, got " + fmt(p.damping));
   require(std::isfinite(p.maxSlope) && p.maxSlope >= 0.0, "max slope must be >= 0 and finite, got " + fmt(p.maxSlope));
+  require(std::isfinite(p.gridDamping) && p.gridDamping >= 0.0,
+          "grid damping must be >= 0 and finite, got " + fmt(p.gridDamping));
+  require(p.spillHeight > 0.0, "spill height (the rim over the rest level) must be > 0, got " + fmt(p.spillHeight));
+}
+
+double gridDampingBound(const WaterParams& p, double dt) {
+  const double d = std::exp(-p.damping * dt), lambda = p.lambda(dt);
+  return (2.0 + 2.0 * d - 8.0 * d * lambda * lambda) / 16.0;
 }
 
 void checkStable(const WaterParams& p, double dt) {
@@ -35,15 +43,25 @@ void checkStable(const WaterParams& p, double dt) {
   require(lambda <= kStabilityBound,
           "lambda = c*dt/h = " + fmt(lambda) + " exceeds the 2D stability bound 1/sqrt(2) = " + fmt(kStabilityBound) +
               " (dt = " + fmt(dt) + " s, h = " + fmt(p.h()) + " m, c = " + fmt(p.waveSpeed) + " m/s)");
+  require(p.gridDamping * dt <= gridDampingBound(p, dt),
+          "grid damping * dt = " + fmt(p.gridDamping * dt) + " exceeds its stability bound " +
+              fmt(gridDampingBound(p, dt)) + " at dt = " + fmt(dt) + " s (lambda = " + fmt(lambda) + ")");
 }
 
 uint32_t substepsFor(const WaterParams& p, double frameTime, double safety) {
   require(std::isfinite(frameTime) && frameTime > 0.0, "frame time must be positive and finite, got " + fmt(frameTime));
   require(safety > 0.0 && safety <= 1.0, "substep safety factor must be in (0, 1]");
-  const double needed = std::ceil(p.lambda(frameTime) / (safety * kStabilityBound));
+  double needed = std::max(1.0, std::ceil(p.lambda(frameTime) / (safety * kStabilityBound)));
   require(needed <= 1e6,
           "frame time " + fmt(frameTime) + " s needs " + fmt(needed) + " substeps, over the limit of 1e6");
-  return std::max<uint32_t>(1, uint32_t(needed));
+  // The grid damping's bound grows as dt shrinks (towards 1/4 at dt -> 0):
+  // more substeps until kappa dt is within it.
+  while (p.gridDamping * frameTime / needed > safety * gridDampingBound(p, frameTime / needed)) {
+    needed += 1.0;
+    require(needed <= 1e6,
+            "grid damping " + fmt(p.gridDamping) + "/s at frame time " + fmt(frameTime) + " s needs over 1e6 substeps");
+  }
+  return uint32_t(needed);
 }
 
 std::string toString(Boundary b) { return b == Boundary::Clamp ? "clamp" : "wrap"; }

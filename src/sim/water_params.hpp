@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <string>
 
 namespace tp::sim {
@@ -19,6 +20,13 @@ struct WaterParams {
   Boundary boundary = Boundary::Clamp;
   double maxSlope = 0.0;  // > 0: |u - 4-neighbour average| <= maxSlope * h after each step
   Scheme scheme = Scheme::Symplectic;
+  // kappa, 1/s: v gains kappa h^2 times its discrete Laplacian each second,
+  // which damps the shortest waves (the checkerboard's amplitude at 4 kappa) and leaves
+  // long ones nearly alone (kappa (h k)^2 / 2). docs/water-numerics.md.
+  double gridDamping = 0.0;
+  // Clamp boundary: the rim's height over the rest level. A cell along a wall
+  // that would rise above it stays at it (its water spills out of the pool).
+  double spillHeight = std::numeric_limits<double>::infinity();
 
   double h() const { return extent / n; }
   double lambda(double dt) const { return waveSpeed * dt / h(); }
@@ -27,11 +35,18 @@ struct WaterParams {
 // Throws with the name and bound of the first impossible parameter.
 void validate(const WaterParams& p);
 
-// Throws when lambda(dt) exceeds the stability bound, naming lambda and the bound.
+// The largest kappa * dt with which a step of dt is stable: the symplectic
+// step's amplification matrix has its eigenvalues in the unit disc for every
+// mode when 8 d lambda^2 + 16 kappa dt <= 2 + 2 d, d = exp(-gamma dt)
+// (docs/water-numerics.md).
+double gridDampingBound(const WaterParams& p, double dt);
+
+// Throws when lambda(dt) exceeds the stability bound, or kappa * dt exceeds
+// gridDampingBound, naming the value and the bound.
 void checkStable(const WaterParams& p, double dt);
 
 // The fewest equal substeps of a frame of `frameTime` seconds that keep
-// lambda <= safety / sqrt(2).
+// lambda <= safety / sqrt(2) and kappa dt <= safety * gridDampingBound.
 uint32_t substepsFor(const WaterParams& p, double frameTime, double safety = 0.9);
 
 std::string toString(Boundary b);

@@ -11,7 +11,14 @@ WaterParams waterParams(const scene::Water& w) {
                      .waveSpeed = w.waveSpeed,
                      .damping = w.damping,
                      .boundary = parseBoundary(w.boundary),
-                     .maxSlope = w.maxSlope};
+                     .maxSlope = w.maxSlope,
+                     .gridDamping = w.gridDamping};
+}
+
+WaterParams waterParams(const scene::Scene& s) {
+  WaterParams p = waterParams(s.water);
+  p.spillHeight = double(s.ground.height) - double(s.water.level);
+  return p;
 }
 
 void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, const scene::Scene& scene, double start,
@@ -36,7 +43,7 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
 }
 
 WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
-  GpuStepper stepper(ctx, waterParams(scene.water), waterInitialState(scene.water), StepKernel::ActiveTiles);
+  GpuStepper stepper(ctx, waterParams(scene), waterInitialState(scene.water), StepKernel::ActiveTiles);
   const WaterClock clock{.substeps = waterSubsteps(scene.water)};  // from the start
   const uint64_t steps = clock.stepsAt(frame);
   const std::vector<size_t> due = dueDrops(scene.water, clock, 0, steps, {});
@@ -53,6 +60,7 @@ glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {
 scene::Water withDynamicsOf(scene::Water water, const scene::Water& from) {
   water.waveSpeed = from.waveSpeed;
   water.damping = from.damping;
+  water.gridDamping = from.gridDamping;
   water.boundary = from.boundary;
   water.maxSlope = from.maxSlope;
   return water;

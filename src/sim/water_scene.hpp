@@ -26,8 +26,11 @@ WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uin
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
 WaterParams waterParams(const scene::Water& water);
+// The same with the pool's rim (the ground's height over the rest level),
+// over which the water along the walls spills: what the renderer steps.
+WaterParams waterParams(const scene::Scene& scene);
 
-// `water` with the dynamics of `from`: its wave speed, damping, boundary and
+// `water` with the dynamics of `from`: its wave speed, damping, grid damping, boundary and
 // max slope, what a live renderer changes (Renderer::setWaterDynamics).
 scene::Water withDynamicsOf(scene::Water water, const scene::Water& from);
 // Whether two waters move alike, being equal but for their ior and

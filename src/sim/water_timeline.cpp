@@ -40,13 +40,34 @@ void recordSceneDrop(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, co
 }
 
 void recordWaterRun(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, const scene::Scene& scene,
-                    const WaterClock& clock, uint64_t from, uint64_t to, const std::vector<size_t>& due) {
+                    const WaterClock& clock, uint64_t from, uint64_t to, const std::vector<size_t>& due,
+                    const std::vector<SphereMove>& moves) {
+  const double pieces = double(to - from);
+  // Where move m is after k of its pieces (of one piece when there is no step).
+  const auto along = [&](const SphereMove& m, uint64_t k) {
+    const glm::vec3 p = k == 0 ? m.from : k >= to - from ? m.to : glm::mix(m.from, m.to, float(double(k) / pieces));
+    return worldToGrid(scene.water, p);
+  };
+  const auto recordMoves = [&](uint64_t k, uint64_t k1) {
+    for (const SphereMove& m : moves) {
+      stepper.recordSphereMove(cmd, along(m, k), along(m, k1), m.radius, scene.water.level);
+    }
+  };
+  if (to == from) recordMoves(0, 1);  // no step to divide them over
   uint64_t at = from;
   // Each run of steps starts at its own time: a moving sphere's path is where
-  // it is at that step, as in a run without the drops between.
+  // it is at that step, as in a run without the drops between. With moves by
+  // hand, a run of one step each.
   const auto stepTo = [&](uint64_t step) {
-    if (step > at) recordWaterSteps(cmd, stepper, scene, clock.timeAt(at, scene.water), step - at);
-    at = step;
+    if (moves.empty()) {
+      if (step > at) recordWaterSteps(cmd, stepper, scene, clock.timeAt(at, scene.water), step - at);
+      at = step;
+      return;
+    }
+    for (; at < step; ++at) {
+      recordMoves(at - from, at - from + 1);
+      recordWaterSteps(cmd, stepper, scene, clock.timeAt(at, scene.water), 1);
+    }
   };
   for (const size_t i : due) {
     const scene::Drop& d = scene.water.drops[i];

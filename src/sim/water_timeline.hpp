@@ -41,10 +41,19 @@ std::vector<size_t> dueDrops(const scene::Water& water, const WaterClock& clock,
 void recordSceneDrop(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, const scene::Water& water,
                      const scene::Drop& drop);
 
+// A sphere moved by hand (the viewer's drag) from one world position to
+// another within a frame.
+struct SphereMove {
+  glm::vec3 from, to;
+  float radius;
+};
+
 // Records the steps from `from` to `to` with the drops `due` (dueDrops'
 // answer for those steps) between them, each at its step: runs of
-// recordWaterSteps, each from its own start time.
+// recordWaterSteps, each from its own start time. The `moves` are divided
+// over the steps, an equal piece before each (all at once if there is none).
 void recordWaterRun(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, const scene::Scene& scene,
-                    const WaterClock& clock, uint64_t from, uint64_t to, const std::vector<size_t>& due);
+                    const WaterClock& clock, uint64_t from, uint64_t to, const std::vector<size_t>& due,
+                    const std::vector<SphereMove>& moves = {});
 
 }  // namespace tp::sim

@@ -26,7 +26,8 @@ const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
 // The keys the renderer takes live (from the next frame, nothing rebuilt).
 bool takenLive(std::string_view path) {
   return path.starts_with("camera.") || path == "water.wave_speed" || path == "water.damping" ||
-         path == "water.max_slope" || (path.starts_with("spheres[") && path.ends_with("].center"));
+         path == "water.grid_damping" || path == "water.max_slope" ||
+         (path.starts_with("spheres[") && path.ends_with("].center"));
 }
 
 // The widgets of one object of the scene file (scene_keys.hpp's visitor):

@@ -1,0 +1,50 @@
+#include "bench/bench_wake.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include "base/atomic_file.hpp"
+#include "bench/bench_output.hpp"
+#include "cli/gpu_session.hpp"
+#include "sim/wake_run.hpp"
+
+namespace tp::app {
+
+int runBenchWake(const BenchWakeOptions& o) {
+  checkBenchOutputs(o.csv, o.plot);
+  GpuSession session(o.validate, o.device);
+  const gpu::Context& ctx = session.context();
+
+  base::AtomicFile csvFile(o.csv);
+  std::ofstream csv(csvFile.tempPath());
+  csv << "grid,speed_fraction,immersion,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,trough_m,"
+         "volume_change_m3,device\n";
+  std::printf("%5s %6s %-9s %6s %6s %8s %8s %7s %8s %8s\n", "grid", "speed", "immersion", "kappa", "steps", "ms/step",
+              "high", "slope", "crest m", "trough m");
+  for (const uint32_t grid : o.sizes) {
+    for (const double speed : o.speeds) {
+      for (const bool submerged : {false, true}) {
+        for (const double kappa : o.gridDampings) {
+          const sim::WakeCase c{.grid = grid, .speedFraction = speed, .submerged = submerged, .gridDamping = kappa};
+          std::fprintf(stderr, "bench wake: grid %u, %.2f c, %s, kappa %g\n", grid, speed,
+                       submerged ? "submerged" : "half in", kappa);
+          const sim::WakeResult r = sim::runWake(ctx, c);
+          const char* immersion = submerged ? "submerged" : "half";
+          const sim::WakeMeasures& m = r.measures;
+          std::printf("%5u %5.2fc %-9s %6g %6llu %8.3f %8.4f %7.3f %8.4f %8.4f\n", grid, speed, immersion, kappa,
+                      static_cast<unsigned long long>(r.steps), 1e3 * r.secondsPerStep, m.highShare, m.maxSlope,
+                      m.crest, m.trough);
+          csv << grid << "," << speed << "," << immersion << "," << kappa << "," << r.steps << ","
+              << formatNumber("%.6g", 1e3 * r.secondsPerStep) << "," << formatNumber("%.6g", m.highShare) << ","
+              << formatNumber("%.6g", m.maxSlope) << "," << formatNumber("%.6g", m.crest) << ","
+              << formatNumber("%.6g", m.trough) << "," << formatNumber("%.3g", r.volumeChange) << ",\""
+              << ctx.deviceName() << "\"\n";
+        }
+      }
+    }
+  }
+  commitBenchCsv(csvFile, csv, "plot_bench_wake.py", o.plot);
+  return session.finish();
+}
+
+}  // namespace tp::app
