@@ -47,6 +47,18 @@ TEST(SceneFile, ErrorsNameTheFileAndTheKey) {
             "shot.json: sky.texture_width: expected a non-negative integer, got -5");
 }
 
+// JSON allows a key twice in one object and the parser would keep the last:
+// refused, with the key's path.
+TEST(SceneFile, DuplicateKeysAreRefusedWithTheirPath) {
+  EXPECT_EQ(errorOf(R"({"water": {"grid": 64, "grid": 32}})"),
+            "shot.json: water.grid: the key appears twice in one object");
+  EXPECT_EQ(errorOf(R"({"sky": {}, "water": {}, "sky": {}})"), "shot.json: sky: the key appears twice in one object");
+  EXPECT_EQ(errorOf(R"({"spheres": [{"radius": 0.3}, {"radius": 0.2, "center": [0, 0, 0], "radius": 0.1}]})"),
+            "shot.json: spheres[1].radius: the key appears twice in one object");
+  // The same key in two objects is no duplicate.
+  EXPECT_EQ(errorOf(R"({"spheres": [{"radius": 0.3}, {"radius": 0.2}]})"), "");
+}
+
 TEST(SceneFile, MalformedAndTruncatedJson) {
   EXPECT_NE(errorOf(R"({"camera": {"fov": 35)").find("shot.json: not valid JSON"), std::string::npos);
   EXPECT_NE(errorOf("").find("shot.json: not valid JSON"), std::string::npos);

@@ -183,12 +183,79 @@ class ObjectWriter {
   json object_ = json::object();
 };
 
+// Watches the parser's events for a key given twice in one object (JSON
+// allows it and the parser keeps the last): where the element being read
+// sits, one segment per open object or array, and the keys each open object
+// has had. Paths are spelled only for the error, so a deep file costs little.
+class DuplicateKeys {
+ public:
+  explicit DuplicateKeys(std::string origin) : origin_(std::move(origin)) {}
+
+  bool operator()(int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        open_.push_back({false, 0, {}});
+        keys_.emplace_back();
+        break;
+      case json::parse_event_t::array_start:
+        open_.push_back({true, 0, {}});
+        break;
+      case json::parse_event_t::key: {
+        const std::string& key = parsed.get_ref<const std::string&>();
+        open_.back().key = key;
+        if (!keys_.back().insert(key).second) {
+          throw std::runtime_error(origin_ + ": " + path() + ": the key appears twice in one object");
+        }
+        break;
+      }
+      case json::parse_event_t::object_end:
+        keys_.pop_back();
+        open_.pop_back();
+        elementDone();
+        break;
+      case json::parse_event_t::array_end:
+        open_.pop_back();
+        elementDone();
+        break;
+      case json::parse_event_t::value:
+        elementDone();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Segment {
+    bool array;
+    size_t index;     // arrays: the element being read
+    std::string key;  // objects: the last key read
+  };
+  void elementDone() {
+    if (!open_.empty() && open_.back().array) ++open_.back().index;
+  }
+  std::string path() const {
+    std::string p;
+    for (const Segment& s : open_) {
+      if (s.array) {
+        p += "[" + std::to_string(s.index) + "]";
+      } else {
+        p += (p.empty() ? "" : ".") + s.key;
+      }
+    }
+    return p;
+  }
+
+  std::string origin_;
+  std::vector<Segment> open_;
+  std::vector<std::set<std::string>> keys_;
+};
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& origin) {
   json root;
   try {
-    root = json::parse(text);
+    root = json::parse(text, DuplicateKeys(origin));
   } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
     throw std::runtime_error(origin + ": not valid JSON (" + e.what() + ")");
   }
