@@ -195,6 +195,29 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   expectCleanFailure("bench passes --csv " + bad.file("x.txt"), bad, {});
 }
 
+// A sphere crossing a small pool at one speed, both immersions, two kappas:
+// a row each, the smoothness measured; bad lists refused with one line.
+TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
+  ScratchDir dir;
+  const std::string csv = dir.file("wake.csv");
+  ProcessResult r =
+      runTidepool("bench wake --validate --sizes 32 --speeds 0.9 --grid-dampings 0,2 --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header,
+            "grid,speed_fraction,immersion,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,trough_m,"
+            "volume_change_m3,device")
+      << table.header;
+  EXPECT_EQ(table.rows, 2 * 2);
+  EXPECT_NE(r.out.find("submerged"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  ScratchDir bad;
+  for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x"}) {
+    expectCleanFailure(std::string("bench wake ") + option + " --csv " + bad.file("x.csv"), bad, {});
+  }
+  expectCleanFailure("bench wake --csv " + bad.file("x.txt"), bad, {});
+}
+
 TEST(BenchCli, WaterBenchmarkWritesItsTableAndRefusesBadSizes) {
   ScratchDir dir;
   const std::string csv = dir.file("water.csv");

@@ -43,11 +43,13 @@ TP_INLINE float chordIntegral(float x0, float x1, float z, float radius, float a
   return discSegmentArea(x0, x1, a, -above);
 }
 
-// The first of the two rows z = -+sqrt(r^2 - rho^2) above `from`, if below `to`
-// (else `to`): where the chord's circle of radius a(z) = rho meets a cut.
-TP_INLINE float nextKink(float from, float to, float rho, float radius) {
-  if (rho >= radius) return to;
-  const float z = sqrt(radius * radius - rho * rho);
+// The row z = sqrt(r^2 - rho^2) where the chord's circle, of radius a(z) =
+// rho, meets a cut (-1 when it never does: rho >= r).
+TP_INLINE float kinkRow(float rho, float radius) { return rho < radius ? sqrt(radius * radius - rho * rho) : -1.0f; }
+
+// The first of the rows -z and z above `from`, if below `to` (else `to`).
+TP_INLINE float nextKink(float from, float to, float z) {
+  if (z < 0.0f) return to;
   if (-z > from && -z < to) return -z;
   if (z > from && z < to) return z;
   return to;
@@ -84,15 +86,18 @@ TP_INLINE float sphereColumnVolume(vec2 lo, vec2 hi, vec3 center, float radius, 
   if (z1 <= z0 || x1 <= -radius || x0 >= radius) return 0.0f;
   const float above = level - center.y;
   const float e2 = above * above;
+  const float kink0 = kinkRow(abs(x0), radius), kink1 = kinkRow(abs(x1), radius);
+  const float kink2 = kinkRow(abs(above), radius);
+  const float kink3 = kinkRow(sqrt(x0 * x0 + e2), radius), kink4 = kinkRow(sqrt(x1 * x1 + e2), radius);
   float sum = 0.0f;
   float from = z0;
   for (int piece = 0; piece < 12 && from < z1; ++piece) {  // at most 10 kinks: 11 pieces
     float to = z1;
-    to = nextKink(from, to, abs(x0), radius);
-    to = nextKink(from, to, abs(x1), radius);
-    to = nextKink(from, to, abs(above), radius);
-    to = nextKink(from, to, sqrt(x0 * x0 + e2), radius);
-    to = nextKink(from, to, sqrt(x1 * x1 + e2), radius);
+    to = nextKink(from, to, kink0);
+    to = nextKink(from, to, kink1);
+    to = nextKink(from, to, kink2);
+    to = nextKink(from, to, kink3);
+    to = nextKink(from, to, kink4);
     sum += gaussOverRows(x0, x1, from, to, radius, above);
     from = to;
   }

@@ -7,11 +7,13 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-double ExactMode::theta() const {
-  const double lambda = params.lambda(dt), h = params.h(), L = params.extent;
+double ExactMode::sigma() const {
+  const double h = params.h(), L = params.extent;
   const double sx = std::sin(m * kPi * h / (2.0 * L)), sz = std::sin(nz * kPi * h / (2.0 * L));
-  return 2.0 * std::asin(lambda * std::sqrt(sx * sx + sz * sz));
+  return 4.0 * (sx * sx + sz * sz);
 }
+
+double ExactMode::theta() const { return 2.0 * std::asin(params.lambda(dt) * std::sqrt(0.25 * sigma())); }
 
 double ExactMode::discreteFactorFromZeroVelocity(double step) const {
   const double th = theta();
@@ -21,9 +23,7 @@ double ExactMode::discreteFactorFromZeroVelocity(double step) const {
 double ExactMode::discreteFactorAtRest(double step) const { return std::cos(step * theta()); }
 
 double ExactMode::discreteFactorIterated(uint64_t steps) const {
-  const double h = params.h(), L = params.extent;
-  const double sx = std::sin(m * kPi * h / (2.0 * L)), sz = std::sin(nz * kPi * h / (2.0 * L));
-  const double sigma = 4.0 * (sx * sx + sz * sz);  // minus the grid Laplacian's symbol, times h^2
+  const double h = params.h(), sigma = this->sigma();
   const double c2 = params.waveSpeed * params.waveSpeed;
   const double decay = std::exp(-params.damping * dt), waveFactor = dt * c2 / (h * h);
   const double keep = decay - params.gridDamping * dt * sigma;

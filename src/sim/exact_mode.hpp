@@ -17,6 +17,9 @@ struct ExactMode {
   double amplitude = 1.0;
   double dt = 0.0;
 
+  // sigma = 4 sin^2(M pi h/2L) + 4 sin^2(N pi h/2L): the mode's eigenvalue of
+  // minus the grid Laplacian, times h^2 (8 for the checkerboard).
+  double sigma() const;
   // theta with sin^2(theta/2) = lambda^2 [sin^2(M pi h/2L) + sin^2(N pi h/2L)].
   double theta() const;
   // u_n / u_0 from a stored v = 0: cos((n + 1/2) theta) / cos(theta / 2).
