@@ -6,9 +6,22 @@
 #include "cli/gpu_session.hpp"
 #include "io/mesh_io.hpp"
 #include "scene/scene_file.hpp"
-#include "shading/water_model.hpp"
+#include "shading/shaded_meshes.hpp"
+#include "sim/water_scene.hpp"
 
 namespace tp::app {
+namespace {
+
+// Writes one frame's meshes; returns its triangles.
+size_t writeFrame(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const std::string& path) {
+  const auto meshes = render::shadedSceneMeshes(scene, water, float(frame) * scene.water.frameTime);
+  io::writeMeshes(path, meshes);
+  size_t triangles = 0;
+  for (const auto& m : meshes) triangles += m.mesh.indices.size() / 3;
+  return triangles;
+}
+
+}  // namespace
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand("export", "Write the scene's triangles (water included) at a frame as OBJ or PLY");
@@ -16,7 +29,7 @@ CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
   cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
-  cmd->add_option("--out", o.out, "Output .obj or .ply")->type_name("PATH")->required();
+  cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it) or .ply")->type_name("PATH")->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -32,11 +45,8 @@ int runExport(const ExportOptions& o) {
     water = sim::simulateWater(session.context(), scene, o.frame);
     exitCode = session.finish();
   }
-  const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr, float(o.frame) * scene.water.frameTime);
-  io::writeMeshes(o.out, meshes);
-  size_t triangles = 0;
-  for (const auto& m : meshes) triangles += m.indices.size() / 3;
-  std::printf("wrote %s (%zu meshes, %zu triangles, frame %u)\n", o.out.c_str(), meshes.size(), triangles, o.frame);
+  const size_t triangles = writeFrame(scene, water ? &*water : nullptr, o.frame, o.out);
+  std::printf("wrote %s (%zu triangles, frame %u)\n", o.out.c_str(), triangles, o.frame);
   return exitCode;
 }
 

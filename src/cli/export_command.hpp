@@ -12,7 +12,8 @@ struct ExportOptions {
   std::string device;
 };
 
-// `tidepool export`: the scene's triangles (water included) at a frame, as OBJ or PLY.
+// `tidepool export`: the scene's triangles (water included) at a frame, as
+// OBJ (with its .mtl) or PLY.
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& options);
 int runExport(const ExportOptions& options);
 
