@@ -7,6 +7,7 @@
 #include "cli/export_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/sim_command.hpp"
+#include "cli/usage_error.hpp"
 #include "gpu/vulkan.hpp"
 #include "viewer/view_command.hpp"
 
@@ -45,6 +46,9 @@ int main(int argc, char** argv) {
     if (exporter->parsed()) return tp::app::runExport(exportOptions);
     if (bench->parsed()) return tp::app::runBench(bench, benchOptions);
     if (view->parsed()) return tp::app::runView(viewOptions);
+  } catch (const tp::app::UsageError& e) {
+    std::fprintf(stderr, "tidepool: error: %s\n", e.what());
+    return 2;
   } catch (const vk::DeviceLostError& e) {
     // Lost outside a wait that says what it was doing (a present, a read of timestamps).
     std::fprintf(stderr, "tidepool: error: the GPU device was lost (VK_ERROR_DEVICE_LOST) in %s\n", e.what());

@@ -120,7 +120,7 @@ TEST(ExportCli, BadOutputsFailCleanly) {
   ScratchDir dir;
   writeText(dir.file("broken.json"), "{\"water\": {\"grid\": \"many\"}}");
   const std::vector<std::string> files{"broken.json"};
-  EXPECT_NE(expectCleanFailure("export --out " + dir.file("scene.stl"), dir, files).find(".obj or .ply"),
+  EXPECT_NE(expectUsageError("export --out " + dir.file("scene.stl"), dir, files).find(".obj or .ply"),
             std::string::npos);
   expectCleanFailure("export --out /nonexistent-dir/scene.obj", dir, files);
   expectCleanFailure("export", dir, files);
@@ -167,6 +167,46 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
   EXPECT_NEAR(waterChange, submerged, 1e-3 * submerged);
+}
+
+// A sequence runs the water once through the range: each frame as a single
+// export of it writes it, the water moving between frames.
+TEST(ExportCli, FramesWriteAMeshSequence) {
+  ScratchDir dir;
+  ProcessResult r = runTidepool("export --validate --frames 0-2 --out " + dir.file("pool.####.obj"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const size_t water = waterVertices(scene::defaultScene().water.grid);
+  std::vector<std::vector<glm::vec3>> heights;
+  for (const char* frame : {"0000", "0001", "0002"}) {
+    const std::string obj = dir.file(std::string("pool.") + frame + ".obj");
+    ASSERT_TRUE(std::filesystem::is_regular_file(dir.file(std::string("pool.") + frame + ".mtl"))) << frame;
+    const ObjContents c = readObj(obj);
+    ASSERT_GE(c.vertices.size(), water) << frame;
+    heights.emplace_back(c.vertices.end() - std::ptrdiff_t(water), c.vertices.end());  // the water is last
+    EXPECT_NE(r.out.find(obj), std::string::npos) << "a line of progress per frame:\n" << r.out;
+  }
+  for (size_t f = 1; f < heights.size(); ++f) {
+    float change = 0.0f;
+    for (size_t k = 0; k < water; ++k) change = std::max(change, std::abs(heights[f][k].y - heights[f - 1][k].y));
+    EXPECT_GT(change, 1e-4f) << "frame " << f;
+  }
+  std::filesystem::create_directory(dir.file("single"));
+  const std::string single = dir.file("single/pool.0002.obj");
+  ASSERT_EQ(runTidepool("export --frame 2 --out " + single, dir).exitCode, 0);
+  // Compared whole but not printed: gtest's diff of two 6 MB texts would not end.
+  EXPECT_TRUE(readText(single) == readText(dir.file("pool.0002.obj"))) << "frame 2 of the sequence differs";
+}
+
+TEST(ExportCli, BadSequencesAreRefused) {
+  ScratchDir dir;
+  const std::string pattern = dir.file("pool.####.obj");
+  EXPECT_NE(expectUsageError("export --frames 2-1 --out " + pattern, dir).find("--frames 2-1"), std::string::npos);
+  EXPECT_NE(expectUsageError("export --frames x --out " + pattern, dir).find("--frames"), std::string::npos);
+  EXPECT_NE(expectUsageError("export --frames 0-2 --out " + dir.file("pool.obj"), dir).find("####"), std::string::npos);
+  expectUsageError("export --frame 1 --frames 0-2 --out " + pattern, dir);
+  EXPECT_NE(expectUsageError("export --frames 0-2 --out " + dir.file("pool.####.fbx"), dir).find(".ply"),
+            std::string::npos);
+  expectCleanFailure("export --frames 0-2 --out /nonexistent-dir/pool.####.obj", dir, {});
 }
 
 }  // namespace tp::test

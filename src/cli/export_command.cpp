@@ -3,7 +3,10 @@
 #include <cstdio>
 #include <optional>
 
+#include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/sequence_progress.hpp"
+#include "cli/usage_error.hpp"
 #include "io/mesh_io.hpp"
 #include "scene/scene_file.hpp"
 #include "shading/shaded_meshes.hpp"
@@ -21,22 +24,64 @@ size_t writeFrame(const scene::Scene& scene, const sim::WaterState* water, uint3
   return triangles;
 }
 
+int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange range) {
+  SequenceProgress progress(range.count(), range.count());
+  const auto write = [&](uint32_t frame, const sim::WaterState* water) {
+    const std::string path = framePath(o.out, frame);
+    writeFrame(scene, water, frame, path);
+    progress.rendered(frame, path);
+  };
+  int exitCode = 0;
+  if (scene.water.enabled) {
+    // One run of the water through the range, each frame written as it is reached.
+    GpuSession session(o.validate, o.device);
+    sim::simulateWaterFrames(session.context(), scene, range.first, range.last,
+                             [&](uint32_t frame, const sim::WaterState& water) { write(frame, &water); });
+    exitCode = session.finish();
+  } else {
+    for (uint32_t frame = range.first;; ++frame) {
+      write(frame, nullptr);
+      if (frame == range.last) break;
+    }
+  }
+  progress.finish();
+  std::printf("wrote frames %u-%u to %s\n", range.first, range.last, o.out.c_str());
+  return exitCode;
+}
+
 }  // namespace
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
-  CLI::App* cmd = app.add_subcommand("export", "Write the scene's triangles (water included) at a frame as OBJ or PLY");
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ or PLY");
   cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
+  CLI::Option* frame =
+      cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
+  cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
+      ->type_name("A-B")
+      ->excludes(frame);
   cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it) or .ply")->type_name("PATH")->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 
 int runExport(const ExportOptions& o) {
-  io::checkMeshOutput(o.out);
+  std::optional<FrameRange> range;
+  if (!o.frames.empty()) {
+    range = parseFrameRange(o.frames);
+    if (!hasFrameField(o.out)) {
+      throw UsageError("--out " + o.out +
+                       ": with --frames the path needs #### where the frame number goes, e.g. meshes/pool.####.obj");
+    }
+  }
+  if (!io::isMeshOutput(o.out)) {
+    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj or .ply");
+  }
+  io::checkMeshOutput(range ? framePath(o.out, range->first) : o.out);
   const scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  if (range) return exportSequence(o, scene, *range);
   std::optional<sim::WaterState> water;
   int exitCode = 0;
   if (scene.water.enabled) {

@@ -44,6 +44,10 @@ MeshFormat meshFormat(const std::string& path) {
 
 }  // namespace
 
+bool isMeshOutput(const std::string& path) {
+  return base::hasExtension(path, ".obj") || base::hasExtension(path, ".ply");
+}
+
 void checkMeshOutput(const std::string& path) {
   if (meshFormat(path) == MeshFormat::Obj) base::checkWritable(mtlPathFor(path));
   base::checkWritable(path);

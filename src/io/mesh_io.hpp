@@ -13,6 +13,9 @@ namespace tp::io {
 // significant digits, so floats read back exactly.
 void writeMeshes(const std::string& path, const std::vector<scene::ShadedMesh>& meshes);
 
+// Whether `path` ends in .obj or .ply (case-insensitive).
+bool isMeshOutput(const std::string& path);
+
 // Throws unless `path` ends in .obj or .ply and a file can be created
 // there (checked before long work starts).
 void checkMeshOutput(const std::string& path);
