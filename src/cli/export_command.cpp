@@ -53,7 +53,7 @@ int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ or PLY");
+      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF");
   cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene")
       ->type_name("PATH")
       ->check(CLI::ExistingFile);
@@ -62,7 +62,7 @@ CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
       ->type_name("A-B")
       ->excludes(frame);
-  cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it) or .ply")->type_name("PATH")->required();
+  cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it), .ply or .glb")->type_name("PATH")->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -77,7 +77,7 @@ int runExport(const ExportOptions& o) {
     }
   }
   if (!io::isMeshOutput(o.out)) {
-    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj or .ply");
+    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj, .ply or .glb");
   }
   io::checkMeshOutput(range ? framePath(o.out, range->first) : o.out);
   const scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);

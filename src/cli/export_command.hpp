@@ -14,7 +14,7 @@ struct ExportOptions {
 };
 
 // `tidepool export`: the scene's triangles (water included) at a frame, or at
-// each frame of a range, as OBJ (with its .mtl) or PLY.
+// each frame of a range, as OBJ (with its .mtl), PLY or binary glTF.
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& options);
 int runExport(const ExportOptions& options);
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "base/atomic_file.hpp"
+#include "io/gltf_writer.hpp"
 #include "io/obj_writer.hpp"
 #include "io/text_file.hpp"
 
@@ -34,18 +35,19 @@ void writePly(std::FILE* f, const std::vector<scene::ShadedMesh>& meshes) {
   }
 }
 
-enum class MeshFormat { Obj, Ply };
+enum class MeshFormat { Obj, Ply, Glb };
 
 MeshFormat meshFormat(const std::string& path) {
   if (base::hasExtension(path, ".obj")) return MeshFormat::Obj;
   if (base::hasExtension(path, ".ply")) return MeshFormat::Ply;
-  throw std::runtime_error("output " + path + " must end in .obj or .ply");
+  if (base::hasExtension(path, ".glb")) return MeshFormat::Glb;
+  throw std::runtime_error("output " + path + " must end in .obj, .ply or .glb");
 }
 
 }  // namespace
 
 bool isMeshOutput(const std::string& path) {
-  return base::hasExtension(path, ".obj") || base::hasExtension(path, ".ply");
+  return base::hasExtension(path, ".obj") || base::hasExtension(path, ".ply") || base::hasExtension(path, ".glb");
 }
 
 void checkMeshOutput(const std::string& path) {
@@ -57,6 +59,9 @@ void writeMeshes(const std::string& path, const std::vector<scene::ShadedMesh>& 
   switch (meshFormat(path)) {
     case MeshFormat::Obj:
       writeObj(path, meshes);
+      return;
+    case MeshFormat::Glb:
+      writeGlb(path, meshes);
       return;
     case MeshFormat::Ply: {
       base::AtomicFile file(path);
