@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "shading/objects_model.hpp"
@@ -149,6 +150,9 @@ std::vector<scene::ShadedMesh> shadedSceneMeshes(const scene::Scene& scene, cons
       shaded.push_back(boxShaded(mesh, placed.boxes[std::stoul(name.substr(3))]));
     } else if (name == "water" && water) {
       shaded.push_back(exportedWaterMesh(scene, *water));
+    } else {
+      // A mesh sceneMeshes gained without its shading here: refused, not left out of the file.
+      throw std::logic_error("shadedSceneMeshes: no normals, UVs or material for mesh " + name);
     }
   }
   return shaded;
