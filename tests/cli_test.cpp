@@ -111,7 +111,7 @@ TEST(Cli, HelpAndVersion) {
   ScratchDir dir;
   ProcessResult help = runTidepool("render --help", dir);
   EXPECT_EQ(help.exitCode, 0);
-  for (const char* option : {"--scene", "--width", "--height", "--frame", "--out", "--png", "--half", "--float",
+  for (const char* option : {"--scene", "--set", "--size", "--frame", "--out", "--png", "--half", "--float",
                              "--validate", "--device", "--profile"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
@@ -141,9 +141,9 @@ TEST(Cli, UnwritableOutputsFailCleanly) {
   std::vector<std::string> none;
   EXPECT_NE(expectCleanFailure("render --out /nonexistent-dir/x.exr", dir, none).find("does not exist"),
             std::string::npos);
-  EXPECT_NE(expectCleanFailure("render --out " + dir.file("x.tiff"), dir, none).find("must end in .exr"),
+  EXPECT_NE(expectUsageError("render --out " + dir.file("x.tiff"), dir, none).find("must be .exr or .png"),
             std::string::npos);
-  EXPECT_NE(expectCleanFailure("render --out " + dir.file("x.exr") + " --png " + dir.file("x.jpg"), dir, none)
+  EXPECT_NE(expectUsageError("render --out " + dir.file("x.exr") + " --png " + dir.file("x.jpg"), dir, none)
                 .find("must end in .png"),
             std::string::npos);
   std::filesystem::create_directory(dir.file("taken.exr"));

@@ -90,6 +90,14 @@ inline std::string expectCleanFailure(const std::string& args, const ScratchDir&
   return r.err;
 }
 
+// A bad command line: as expectCleanFailure, with exit code 2.
+inline std::string expectUsageError(const std::string& args, const ScratchDir& dir,
+                                    const std::vector<std::string>& filesBefore = {}) {
+  const std::string err = expectCleanFailure(args, dir, filesBefore);
+  EXPECT_EQ(runTidepool(args, dir).exitCode, 2) << args << "\n" << err;
+  return err;
+}
+
 inline void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 }  // namespace tp::test

@@ -1,9 +1,13 @@
 #include "cli/export_command.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <optional>
 
+#include "base/atomic_file.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/number_checks.hpp"
+#include "cli/usage_error.hpp"
 #include "io/mesh_io.hpp"
 #include "scene/scene_file.hpp"
 #include "shading/water_model.hpp"
@@ -12,18 +16,21 @@ namespace tp::app {
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand("export", "Write the scene's triangles (water included) at a frame as OBJ or PLY");
-  cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
+  addSceneSourceOptions(cmd, o.scene, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene");
+  cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
+      ->capture_default_str()
+      ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
   cmd->add_option("--out", o.out, "Output .obj or .ply")->type_name("PATH")->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 
 int runExport(const ExportOptions& o) {
+  if (!base::hasExtension(o.out, ".obj") && !base::hasExtension(o.out, ".ply")) {
+    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj or .ply");
+  }
   io::checkMeshOutput(o.out);
-  const scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene scene = loadScene(o.scene, scene::defaultScene());
   std::optional<sim::WaterState> water;
   int exitCode = 0;
   if (scene.water.enabled) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
 #include "reference/reference_ao.hpp"
@@ -79,7 +80,7 @@ bool wants(const std::vector<std::string>& aovs, const char* name) {
 RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
   const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
   if (ao && (o.reference || !scene.ao.enabled)) {
-    throw std::runtime_error(
+    throw UsageError(
         "--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
         "nor with a scene whose ao.enabled is false");
   }
@@ -97,7 +98,7 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
   io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
-  io::writeExr(exr, image, types, attributes);
+  if (!exr.empty()) io::writeExr(exr, image, types, attributes);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }
 

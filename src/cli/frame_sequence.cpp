@@ -1,5 +1,6 @@
 #include "cli/frame_sequence.hpp"
 
+#include "cli/usage_error.hpp"
 #include "cli/whole_number.hpp"
 
 #include <stdexcept>
@@ -12,8 +13,7 @@ FrameRange parseFrameRange(const std::string& text) {
   const auto first = wholeNumber<uint32_t>(std::string_view(text).substr(0, dash));
   const auto last = dash == std::string::npos ? first : wholeNumber<uint32_t>(std::string_view(text).substr(dash + 1));
   if (!first || !last || *first > *last) {
-    throw std::runtime_error("--frames " + text +
-                             ": expected A-B, frame numbers with A <= B (e.g. 0-99), or one frame N");
+    throw UsageError("--frames " + text + ": expected A-B, frame numbers with A <= B (e.g. 0-99), or one frame N");
   }
   return {*first, *last};
 }

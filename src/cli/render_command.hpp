@@ -8,11 +8,17 @@
 namespace tp::app {
 
 struct RenderOptions {
-  SceneChoice scene;  // --scene, --no-ao, --preset
+  SceneChoice scene;  // --scene, --set, --no-ao, --preset
   uint32_t width = 1280;
   uint32_t height = 720;
+  std::string size;        // --size WxH, resolved into width and height
+  uint32_t oldWidth = 0;   // --width, the old spelling of --size's width; 0: not given
+  uint32_t oldHeight = 0;  // --height, likewise
   uint32_t frame = 0;
-  std::string out = "render.exr";
+  std::vector<std::string> outs;  // --out, each .exr or .png; none: render.exr
+  std::string pngAlso;            // --png, the old spelling of a second --out PATH.png
+  // The outputs resolveOutputs finds in outs and pngAlso; an empty one is not written.
+  std::string exr;
   std::string png;
   bool floatOutput = false;
   bool halfOutput = false;
@@ -31,6 +37,11 @@ struct RenderOptions {
 
 // Adds `tidepool render` and its options to the command line.
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
+
+// The options with --size, --out and --png resolved into width, height, exr
+// and png. Throws UsageError on an extension that names no format, two
+// outputs of one format, or --aov without an EXR.
+RenderOptions resolveOutputs(const RenderOptions& options);
 
 // Returns the process exit code; throws std::exception on failure.
 int runRender(const RenderOptions& options);
