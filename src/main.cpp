@@ -2,7 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 
+#include "base/version.hpp"
 #include "bench/bench_command.hpp"
 #include "cli/export_command.hpp"
 #include "cli/render_command.hpp"
@@ -12,7 +14,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
-  app.set_version_flag("--version", "tidepool 0.1");
+  const std::string version = std::string("tidepool ") + tp::base::kVersion;
+  app.set_version_flag("--version", version);
   app.require_subcommand(1);
   tp::app::RenderOptions renderOptions;
   CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
@@ -33,7 +36,7 @@ int main(int argc, char** argv) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
     return 0;
   } catch (const CLI::CallForVersion&) {
-    std::puts("tidepool 0.1");
+    std::puts(version.c_str());
     return 0;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "tidepool: error: %s (see tidepool --help)\n", e.what());

@@ -1,6 +1,7 @@
 // The EXR that `render` writes, read as a compositor reads it: the AOVs in
-// layers (LAYER.COMPONENT, upper-case components), no infinity anywhere, and
-// alpha 0 on the sky only when asked.
+// layers (LAYER.COMPONENT, upper-case components), no infinity anywhere,
+// alpha 0 on the sky only when asked, and the colour, software and frame
+// attributes.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "base/rational.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
 #include "scene/scene.hpp"
@@ -124,6 +126,50 @@ TEST(ExrConventions, TransparentSkyIsAnOptionAndTheReferenceAgrees) {
   }
   // The two differ only where an edge crosses a pixel centre.
   EXPECT_NEAR(double(referenceSky), double(sky), 0.05 * double(z.size()));
+}
+
+TEST(ExrConventions, SequenceFramesCarryColourSoftwareFrameAndRate) {
+  ScratchDir dir;
+  writeText(dir.file("scene.json"), R"({"water": {"frame_time": 0.04}})");
+  const ProcessResult r = runTidepool(
+      "render" + kSmall + " --scene " + dir.file("scene.json") + " --frames 2-3 --out " + dir.file("f.####.exr"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const ProcessResult version = runTidepool("--version", dir);
+  ASSERT_EQ(version.exitCode, 0);
+  for (int frame : {2, 3}) {
+    auto in = OIIO::ImageInput::open(dir.file("f.000" + std::to_string(frame) + ".exr"));
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    // By exact name: OpenEXR's readers match attribute names case-sensitively.
+    auto attribute = [&](const char* name, OIIO::TypeDesc type) { return spec.find_attribute(name, type, true); };
+    const OIIO::ParamValue* chromaticities = attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8));
+    ASSERT_TRUE(chromaticities);
+    const float* xy = static_cast<const float*>(chromaticities->data());
+    const float rec709[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+    for (int i = 0; i < 8; ++i) EXPECT_FLOAT_EQ(xy[i], rec709[i]) << i;
+    const OIIO::ParamValue* software = attribute("software", OIIO::TypeString);
+    ASSERT_TRUE(software);
+    EXPECT_EQ(software->get_string() + "\n", version.out);
+    const OIIO::ParamValue* number = attribute("frame", OIIO::TypeInt);
+    ASSERT_TRUE(number);
+    EXPECT_EQ(number->get_int(), frame);
+    const OIIO::ParamValue* fps = attribute("framesPerSecond", OIIO::TypeRational);
+    ASSERT_TRUE(fps) << "no framesPerSecond";
+    const int* rate = static_cast<const int*>(fps->data());
+    EXPECT_EQ(rate[0], 25);  // 1 / water.frame_time
+    EXPECT_EQ(rate[1], 1);
+  }
+}
+
+TEST(ExrConventions, FrameRatesAreTheNearestVideoRationals) {
+  EXPECT_EQ(base::nearestRational(1.0 / double(1.0f / 30.0f), 1001), (base::Rational{30, 1}));
+  EXPECT_EQ(base::nearestRational(1.0 / double(0.04f), 1001), (base::Rational{25, 1}));
+  EXPECT_EQ(base::nearestRational(30000.0 / 1001.0, 1001), (base::Rational{30000, 1001}));
+  EXPECT_EQ(base::nearestRational(24000.0 / 1001.0, 1001), (base::Rational{24000, 1001}));
+  EXPECT_EQ(base::nearestRational(62.5, 1001), (base::Rational{125, 2}));
+  EXPECT_EQ(base::nearestRational(0.5, 1001), (base::Rational{1, 2}));
+  for (double bad : {0.0, -1.0, double(INFINITY), double(NAN)})
+    EXPECT_THROW(base::nearestRational(bad, 1001), std::invalid_argument);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/rational.hpp"
+#include "base/version.hpp"
 #include "cli/frame_channels.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
@@ -11,6 +13,9 @@
 
 namespace tp::app {
 namespace {
+
+// Video rates are n/1 or n*1000/1001 (NTSC's 30000/1001).
+constexpr int32_t kFpsMaxDenominator = 1001;
 
 // One float per pixel of a `width` x `height` image, nearest-sampled to the
 // frame's size (the raw AO at half resolution).
@@ -66,7 +71,14 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
   io::FloatImage image = frameChannels(frame, channels, aoRaw, aoRef);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
-  io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
+  const io::ExrAttributes attributes{
+      .hasCamera = true,
+      .worldToCamera = frame.worldToCamera,
+      .worldToNDC = frame.worldToNDC,
+      .linearRec709 = true,
+      .software = std::string("tidepool ") + base::kVersion,
+      .frame = frameNumber,
+      .framesPerSecond = base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator)};
   io::writeExr(exr, image, types, attributes);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }

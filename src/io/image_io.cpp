@@ -36,6 +36,10 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
   file.commit();
 }
 
+// OpenEXR's chromaticities of linear Rec.709 (sRGB's primaries): red, green,
+// blue and white (D65) as CIE xy.
+constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+
 }  // namespace
 
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
@@ -56,6 +60,17 @@ void writeExr(const std::string& path, const FloatImage& image, const std::vecto
     if (image.channels[c] == "A") spec.alpha_channel = int(c);
   }
   spec.attribute("compression", "zip");
+  if (attributes.linearRec709) {
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
+  }
+  if (!attributes.software.empty()) spec.attribute("software", attributes.software);
+  if (attributes.frame) spec.attribute("frame", int(*attributes.frame));
+  if (attributes.framesPerSecond) {
+    // OpenEXR's standard name; OpenImageIO's own FramesPerSecond would be
+    // written with its capital F, which other readers do not know.
+    const int fps[2] = {attributes.framesPerSecond->numerator, attributes.framesPerSecond->denominator};
+    spec.attribute("framesPerSecond", OIIO::TypeRational, fps);
+  }
   if (attributes.hasCamera) {
     // GLM's column-major storage of M is the row-major storage of M^T, which is
     // OpenEXR's row-vector form of the same transform.
