@@ -1,7 +1,7 @@
 // The EXR that `render` writes, read as a compositor reads it: the AOVs in
 // layers (LAYER.COMPONENT, upper-case components), no infinity anywhere,
-// alpha 0 on the sky only when asked, and the colour, software and frame
-// attributes.
+// alpha 0 on the sky only when asked, the colour, software and frame
+// attributes, and each compression asked for.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -159,6 +159,25 @@ TEST(ExrConventions, SequenceFramesCarryColourSoftwareFrameAndRate) {
     EXPECT_EQ(rate[0], 25);  // 1 / water.frame_time
     EXPECT_EQ(rate[1], 1);
   }
+}
+
+TEST(ExrConventions, EachCompressionIsWrittenAndABadOneRefused) {
+  ScratchDir dir;
+  for (const std::string compression : {"", "zip", "piz", "dwaa", "none"}) {
+    const std::string exr = dir.file("c" + compression + ".exr");
+    const std::string option = compression.empty() ? "" : " --compression " + compression;
+    const ProcessResult r = runTidepool("render" + kSmall + option + " --out " + exr, dir);
+    ASSERT_EQ(r.exitCode, 0) << compression << "\n" << r.err;
+    auto in = OIIO::ImageInput::open(exr);
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().get_string_attribute("compression"), compression.empty() ? "zip" : compression);
+  }
+  ScratchDir bad;
+  const ProcessResult r = runTidepool("render --compression lzma --out " + bad.file("x.exr"), bad);
+  EXPECT_EQ(r.exitCode, 2) << r.err;  // a bad command line
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("lzma"), std::string::npos) << r.err;
+  EXPECT_TRUE(bad.entries().empty());
 }
 
 TEST(ExrConventions, FrameRatesAreTheNearestVideoRationals) {

@@ -78,7 +78,8 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
       .linearRec709 = true,
       .software = std::string("tidepool ") + base::kVersion,
       .frame = frameNumber,
-      .framesPerSecond = base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator)};
+      .framesPerSecond = base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator),
+      .compression = o.compression};
   io::writeExr(exr, image, types, attributes);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }

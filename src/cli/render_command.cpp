@@ -102,6 +102,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   cmd->add_flag("--transparent-sky", o.transparentSky,
                 "Write RGBA 0 in the EXR where only the sky is seen, for compositing over a plate (the sky still "
                 "lights and is reflected; the PNG keeps it)");
+  cmd->add_option("--compression", o.compression,
+                  "EXR compression: zip, piz, dwaa (lossy on R G B and the AO layers) or none")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->check(CLI::IsMember(io::exrCompressions()));
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")

@@ -28,7 +28,8 @@ struct RenderOptions {
   std::string checkpointDir;      // with frames: where checkpoints are saved and resumed from
   bool resume = false;            // with frames: leave out the frames whose files exist and are whole
   // How the EXR is written.
-  bool transparentSky = false;  // RGBA 0 where nothing is hit
+  std::string compression = "zip";  // one of io::exrCompressions()
+  bool transparentSky = false;      // RGBA 0 where nothing is hit
 };
 
 // Adds `tidepool render` and its options to the command line.

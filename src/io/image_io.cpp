@@ -42,6 +42,11 @@ constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0
 
 }  // namespace
 
+const std::vector<std::string>& exrCompressions() {
+  static const std::vector<std::string> names{"zip", "piz", "dwaa", "none"};
+  return names;
+}
+
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
               const ExrAttributes& attributes) {
   base::requireExtension(path, ".exr");
@@ -59,7 +64,13 @@ void writeExr(const std::string& path, const FloatImage& image, const std::vecto
   for (size_t c = 0; c < channels; ++c) {
     if (image.channels[c] == "A") spec.alpha_channel = int(c);
   }
-  spec.attribute("compression", "zip");
+  const auto& compressions = exrCompressions();
+  if (std::find(compressions.begin(), compressions.end(), attributes.compression) == compressions.end()) {
+    std::string known;
+    for (const std::string& name : compressions) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("EXR compression " + attributes.compression + " is not one of " + known);
+  }
+  spec.attribute("compression", attributes.compression);
   if (attributes.linearRec709) {
     spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
   }

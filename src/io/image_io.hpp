@@ -19,6 +19,9 @@ struct FloatImage {
   std::vector<float> pixels;          // width * height * channels.size()
 };
 
+// The compressions writeExr takes, as OpenEXR names them; the first is the default.
+const std::vector<std::string>& exrCompressions();
+
 struct ExrAttributes {
   bool hasCamera = false;
   glm::mat4 worldToCamera{1.0f};  // column-vector matrices, as GLM keeps them
@@ -27,10 +30,12 @@ struct ExrAttributes {
   std::string software{};     // e.g. "tidepool 0.1"; none when empty
   std::optional<uint32_t> frame{};
   std::optional<base::Rational> framesPerSecond{};
+  std::string compression = exrCompressions().front();
 };
 
-// Writes an OpenEXR file (zip compressed) through a temporary file renamed
-// into place, each channel as half or float (channelTypes, one per channel).
+// Writes an OpenEXR file through a temporary file renamed into place, each
+// channel as half or float (channelTypes, one per channel), with the
+// attributes' compression (one of exrCompressions(), else it throws).
 // The camera matrices become the standard m44f attributes worldToCamera and
 // worldToNDC, in OpenEXR's row-vector convention; the others the standard
 // chromaticities and framesPerSecond, and software (string) and frame (int).
