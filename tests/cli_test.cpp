@@ -65,7 +65,7 @@ TEST(Cli, AovsAreFloatChannelsAfterRgba) {
   ASSERT_TRUE(in);
   const OIIO::ImageSpec& spec = in->spec();
   EXPECT_EQ(spec.channelnames,
-            (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z", "P.x", "P.y", "P.z"}));
+            (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "P.X", "P.Y", "P.Z"}));
   ASSERT_EQ(spec.channelformats.size(), 11u);
   EXPECT_EQ(spec.channelformats[0], OIIO::TypeDesc::HALF);
   EXPECT_EQ(spec.channelformats[4], OIIO::TypeDesc::FLOAT);
@@ -87,7 +87,7 @@ TEST(Cli, ReferenceWritesTheRasterLayoutAndReportsProgress) {
   EXPECT_TRUE(std::filesystem::is_regular_file(png));
   auto in = OIIO::ImageInput::open(exr);
   ASSERT_TRUE(in);
-  EXPECT_EQ(in->spec().channelnames, (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z"}));
+  EXPECT_EQ(in->spec().channelnames, (std::vector<std::string>{"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z"}));
   ScratchDir bad;
   const std::string out = " --out " + bad.file("x.exr");
   expectCleanFailure("render --reference --samples 0" + out, bad, {});

@@ -103,13 +103,22 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                 "Record every pass the scene has, even those this frame does not need (the frame to compare "
                 "against; docs/frame-skipping.md)");
   cmd->add_option("--aov", o.aovs,
-                  "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
-                  "P (P.x P.y P.z world position); infinite Z and P where nothing is hit. With AO on: ao (after "
-                  "blur and upsample), ao_raw (unblurred, at the AO resolution), ao_ref (ray traced from the same "
-                  "G-buffer with Embree, 1024 rays per pixel; slow)")
+                  "Extra float32 EXR channels in layers, comma-separated: Z (view depth), N (N.X N.Y N.Z world "
+                  "normal), P (P.X P.Y P.Z world position); where nothing is hit Z is the camera's far plane and P "
+                  "on it. With AO on: ao (AO.Y, after blur and upsample), ao_raw (AO_raw.Y, unblurred, at the AO "
+                  "resolution), ao_ref (AO_ref.Y, ray traced from the same G-buffer with Embree, 1024 rays per "
+                  "pixel; slow)")
       ->delimiter(',')
       ->type_name("LIST")
       ->check(CLI::IsMember({"Z", "N", "P", "ao", "ao_raw", "ao_ref"}));
+  cmd->add_flag("--transparent-sky", o.transparentSky,
+                "Write RGBA 0 in the EXR where only the sky is seen, for compositing over a plate (the sky still "
+                "lights and is reflected; the PNG keeps it)");
+  cmd->add_option("--compression", o.compression,
+                  "EXR compression: zip, piz, dwaa (lossy on R G B and the AO layers) or none")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->check(CLI::IsMember(io::exrCompressions()));
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")

@@ -33,6 +33,9 @@ struct RenderOptions {
   uint32_t checkpointEvery = 0;   // with frames: save the water every K frames in checkpointDir
   std::string checkpointDir;      // with frames: where checkpoints are saved and resumed from
   bool resume = false;            // with frames: leave out the frames whose files exist and are whole
+  // How the EXR is written.
+  std::string compression = "zip";  // one of io::exrCompressions()
+  bool transparentSky = false;      // RGBA 0 where nothing is hit
 };
 
 // Adds `tidepool render` and its options to the command line.
