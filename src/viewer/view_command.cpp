@@ -30,8 +30,6 @@ UsageError badValue(const char* option, const std::string& value, const char* ex
   return UsageError(std::string(option) + " " + value + ": expected " + expected);
 }
 
-constexpr const char* kSizeForm = "WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720";
-
 ScriptedDrop scriptedDrop(const std::string& text) {
   constexpr const char* form = "FRAME:X,Z,RADIUS,AMP, e.g. 30:0.5,-0.3,0.25,0.04 (a positive radius)";
   const size_t colon = text.find(':');
@@ -248,8 +246,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
 
 int runView(const ViewOptions& o) {
   // Every input is checked before the window opens: a mistake costs nothing and leaves nothing.
-  const auto frameSize = parseSize(o.size);
-  if (!frameSize) throw badValue("--size", o.size, kSizeForm);
+  const auto frameSize = parseSize(o.size);  // checked by the parser (frameSizeCheck)
   ViewConfig config;
   config.width = frameSize->first;
   config.height = frameSize->second;
