@@ -15,7 +15,7 @@ add_compile_options(-Wno-pass-failed)
 
 add_library(tidepool_cpu STATIC
   src/scene/scene.cpp src/scene/scene_file.cpp src/scene/camera.cpp
-  src/base/text_file.cpp src/base/atomic_file.cpp src/base/background_work.cpp src/base/median.cpp
+  src/base/text_file.cpp src/base/atomic_file.cpp src/base/background_work.cpp src/base/median.cpp src/base/number_text.cpp src/base/closest_word.cpp
   src/io/image_io.cpp
   src/sim/water_state.cpp src/io/water_state_file.cpp src/sim/water_params.cpp src/sim/cpu_stepper.cpp src/sim/reference_sim.cpp
   src/sim/exact_mode.cpp src/sim/wake_measures.cpp

@@ -2,9 +2,14 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "bench/bench_command.hpp"
+#include "cli/build_version.hpp"
+#include "cli/command_help.hpp"
 #include "cli/export_command.hpp"
+#include "cli/parse_errors.hpp"
 #include "cli/render_command.hpp"
 #include "cli/sim_command.hpp"
 #include "cli/usage_error.hpp"
@@ -13,8 +18,11 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
-  app.set_version_flag("--version", "tidepool 0.1");
+  app.set_version_flag("--version", tp::app::versionText(), "Print the version and the git commit built from");
   app.require_subcommand(1);
+  app.footer(
+      "tidepool help COMMAND, or tidepool COMMAND --help, tells more of each; exit codes: 0 done, 1 failed, "
+      "2 a bad command line, 130 or 143 stopped by SIGINT or SIGTERM");
   tp::app::RenderOptions renderOptions;
   CLI::App* render = tp::app::addRenderCommand(app, renderOptions);
   tp::app::SimOptions simOptions;
@@ -25,6 +33,8 @@ int main(int argc, char** argv) {
   CLI::App* bench = tp::app::addBenchCommand(app, benchOptions);
   tp::app::ViewOptions viewOptions;
   CLI::App* view = tp::app::addViewCommand(app, viewOptions);
+  tp::app::HelpOptions helpOptions;
+  CLI::App* help = tp::app::addHelpCommand(app, helpOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -34,13 +44,15 @@ int main(int argc, char** argv) {
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
     return 0;
   } catch (const CLI::CallForVersion&) {
-    std::puts("tidepool 0.1");
+    std::puts(tp::app::versionText());
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "tidepool: error: %s (see tidepool --help)\n", e.what());
+    const std::string message = tp::app::explainParseError(app, e, std::vector<std::string>(argv + 1, argv + argc));
+    std::fprintf(stderr, "tidepool: error: %s\n", message.c_str());
     return 2;
   }
   try {
+    if (help->parsed()) return tp::app::runHelp(app, helpOptions);
     if (render->parsed()) return tp::app::runRender(renderOptions);
     if (sim->parsed()) return tp::app::runSim(*sim, simOptions);
     if (exporter->parsed()) return tp::app::runExport(exportOptions);

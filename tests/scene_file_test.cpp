@@ -101,7 +101,7 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"pool": {"brick_width": 0.01, "brick_height": 0.1, "mortar_fraction": 0.2}})")
                 .find("must be less than pool.brick_width"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"pool": {"wall_specular": 1.5}})").find("pool.wall_specular = 1.500000 is outside [0"),
+  EXPECT_NE(errorOf(R"({"pool": {"wall_specular": 1.5}})").find("pool.wall_specular = 1.5 is outside [0"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"pool": {"wall_roughness": -0.1}})").find("pool.wall_roughness"), std::string::npos);
   EXPECT_NE(errorOf(R"({"spheres": [{"specular": -1}]})").find("spheres[].specular"), std::string::npos);
@@ -125,12 +125,11 @@ TEST(SceneFile, GlassKeys) {
   EXPECT_EQ(errorOf(R"({"spheres": [{"material": "metal"}]})"),
             "shot.json: spheres[].material must be one of lambert, glass, got 'metal'");
   EXPECT_EQ(errorOf(R"({"spheres": [{"material": "glass", "ior": 1}]})"),
-            "shot.json: spheres[].ior = 1.000000 is outside (1, 3]");
-  EXPECT_EQ(errorOf(R"({"spheres": [{"ior": 3.5}]})"), "shot.json: spheres[].ior = 3.500000 is outside (1, 3]");
+            "shot.json: spheres[].ior = 1 is outside (1, 3]");
+  EXPECT_EQ(errorOf(R"({"spheres": [{"ior": 3.5}]})"), "shot.json: spheres[].ior = 3.5 is outside (1, 3]");
   EXPECT_EQ(errorOf(R"({"spheres": [{"ior": "glass"}]})"), "shot.json: spheres[0].ior: expected a number, got string");
-  EXPECT_NE(
-      errorOf(R"({"render": {"glass_search_steps": 0}})").find("render.glass_search_steps = 0.000000 is outside [1"),
-      std::string::npos);
+  EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 0}})").find("render.glass_search_steps = 0 is outside [1"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 65}})").find("render.glass_search_steps"), std::string::npos);
 }
 

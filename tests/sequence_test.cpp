@@ -262,7 +262,7 @@ TEST(RenderSequence, RefusesBadInputWithOneLine) {
       {"--frames x" + out, "--frames x: expected A-B"},
       {"--frames 1-" + out, "--frames 1-: expected A-B"},
       {"--frames 0-3 --out " + dir.file("f.exr"), "needs #### where the frame number goes"},
-      {"--frames 0-3 --png " + dir.file("f.png") + out, "--png " + dir.file("f.png") + ": with --frames"},
+      {"--frames 0-3 --png " + dir.file("f.png") + out, "the output " + dir.file("f.png") + " needs ####"},
       {"--frames 0-3 --out " + dir.file("missing/f.####.exr"), "does not exist"},
       {"--frames 0-3 --checkpoint-every 2" + out, "--checkpoint-every needs --checkpoint-dir"},
       {"--frames 0-3 --checkpoint-dir " + dir.file("nowhere") + out, "not a folder"},

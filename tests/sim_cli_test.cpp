@@ -188,9 +188,13 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir bad;
   for (const char* sizes : {"48", "48x32,0x32", "5000x10"}) {
     const std::string error =
-        expectCleanFailure(std::string("bench passes --resolutions ") + sizes + " --csv " + bad.file("x.csv"), bad, {});
-    EXPECT_NE(error.find("bench passes"), std::string::npos) << error;
+        expectUsageError(std::string("bench passes --size ") + sizes + " --csv " + bad.file("x.csv"), bad, {});
+    EXPECT_NE(error.find("--size: "), std::string::npos) << error;
+    EXPECT_NE(error.find(" is not WxH with each side 8 to 4096"), std::string::npos) << error;
   }
+  // The old spelling is checked alike, and named as the user wrote it.
+  const std::string old = expectUsageError("bench passes --resolutions 48 --csv " + bad.file("x.csv"), bad, {});
+  EXPECT_NE(old.find("--resolutions: 48 is not WxH"), std::string::npos) << old;
   expectCleanFailure("bench passes --frames 0 --csv " + bad.file("x.csv"), bad, {});
   expectCleanFailure("bench passes --csv " + bad.file("x.txt"), bad, {});
 }

@@ -20,7 +20,7 @@ TEST(SsaoCli, AoChannelsFollowRgba) {
                                   dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const io::FloatImage image = io::readImage(exr);
-    ASSERT_EQ(image.channels, (std::vector<std::string>{"R", "G", "B", "A", "ao", "ao_raw", "ao_ref"}));
+    ASSERT_EQ(image.channels, (std::vector<std::string>{"R", "G", "B", "A", "AO.Y", "AO_raw.Y", "AO_ref.Y"}));
     float lowest[3] = {1.0f, 1.0f, 1.0f};
     for (size_t p = 0; p < size_t(image.width) * image.height; ++p) {
       for (int c = 0; c < 3; ++c) {

@@ -167,6 +167,15 @@ TEST_F(ViewTest, ScriptedCameraDragDropPauseAndSaveShowTheRenderersFrame) {
   const std::string saved = dir.file("view-0020.exr");
   EXPECT_NE(r.out.find("saved " + saved + " (frame 20)"), std::string::npos) << r.out;
   ASSERT_TRUE(std::filesystem::exists(saved)) << r.out;
+  {
+    // Saved as render writes its EXR: the colour space and the program named.
+    auto in = OIIO::ImageInput::open(saved);
+    ASSERT_TRUE(in);
+    EXPECT_TRUE(in->spec().find_attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), true));
+    const OIIO::ParamValue* software = in->spec().find_attribute("software", OIIO::TypeString, true);
+    ASSERT_TRUE(software);
+    EXPECT_EQ(std::string(*static_cast<const char* const*>(software->data())).rfind("tidepool 0.1 (commit ", 0), 0u);
+  }
 
   // The same calls in process, frame by frame as the viewer renders them.
   render::Renderer renderer(ctx(), scene, kWidth, kHeight);
@@ -503,11 +512,11 @@ TEST(View, RefusesBadInputBeforeOpeningAWindow) {
   const std::vector<std::string> files{"broken.json", "dry.json", "folder.png"};
   const std::string noDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY";
   const std::pair<std::string, std::string> cases[] = {
-      {"--size 12x", "--size 12x: expected WIDTHxHEIGHT"},
-      {"--size 0x90", "--size 0x90: expected"},
-      {"--size 160x90x2", "--size 160x90x2: expected"},
-      {"--size 20000x90", "--size 20000x90: expected"},
-      {"--size x", "--size x: expected"},
+      {"--size 12x", "--size: 12x is not WxH with each side 1 to 16384"},
+      {"--size 0x90", "--size: 0x90 is not WxH"},
+      {"--size 160x90x2", "--size: 160x90x2 is not WxH"},
+      {"--size 20000x90", "--size: 20000x90 is not WxH"},
+      {"--size x", "--size: x is not WxH"},
       {"--size 16384x16384", "over the limit"},
       {"--frames 2 --screenshot " + dir.file("missing/shot.png"), "does not exist"},
       {"--frames 2 --screenshot " + dir.file("shot.jpg"), "must end in .exr or .png"},

@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
-build/tidepool render --out default.exr --png default.png "$@"
+build/tidepool render --out default.exr --out default.png "$@"

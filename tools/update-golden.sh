@@ -8,7 +8,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 grep -v '^#' tests/golden/cases.txt | while read -r name scene frame; do
   [ -n "$name" ] || continue
-  args=(--width 160 --height 90 --frame "$frame" --out "$scratch/$name.exr" --png "tests/golden/$name.png")
+  args=(--size 160x90 --frame "$frame" --out "$scratch/$name.exr" --out "tests/golden/$name.png")
   [ "$scene" = "-" ] || args+=(--scene "$scene")
   build/tidepool render --validate "${args[@]}"
 done

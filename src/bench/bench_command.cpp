@@ -1,6 +1,10 @@
 #include "bench/bench_command.hpp"
 
+#include "bench/bench_output.hpp"
+#include "cli/frame_size.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/number_checks.hpp"
+#include "cli/old_spelling.hpp"
 
 namespace tp::app {
 
@@ -10,6 +14,36 @@ namespace {
 void addOutputOptions(CLI::App* cmd, std::string& csv, std::string& plot) {
   cmd->add_option("--csv", csv, "CSV output")->type_name("PATH")->capture_default_str();
   cmd->add_option("--plot", plot, "PNG plot output (empty: none)")->type_name("PATH")->capture_default_str();
+}
+
+// The image size a benchmark renders at, WxH.
+void addSizeOption(CLI::App* cmd, std::string& size) {
+  const CLI::Validator check = frameSizeCheck(kMinBenchSide, kMaxBenchSide);
+  auto* option = cmd->add_option("--size", size, "Image size WxH, each side 8 to 4096")
+                     ->type_name("WxH")
+                     ->capture_default_str()
+                     ->check(check);
+  addOldSpelling(cmd, "--resolution", size, option, check);
+}
+
+// The image sizes a benchmark renders at, WxH,WxH,...
+void addSizesOption(CLI::App* cmd, std::vector<std::string>& sizes) {
+  const CLI::Validator check = frameSizeCheck(kMinBenchSide, kMaxBenchSide);
+  auto* option = cmd->add_option("--size", sizes, "Image sizes WxH, comma-separated, each side 8 to 4096")
+                     ->type_name("WxH,...")
+                     ->delimiter(',')
+                     ->capture_default_str()
+                     ->check(check);
+  addOldSpelling(cmd, "--resolutions", sizes, option, check);
+}
+
+// The grid sides a simulation benchmark measures.
+template <typename T>
+void addGridsOption(CLI::App* cmd, std::vector<T>& grids, T maxSide) {
+  const CLI::Validator check = inRange(T(16), maxSide);
+  auto* option =
+      cmd->add_option("--grids", grids, "Grid sides to measure")->delimiter(',')->capture_default_str()->check(check);
+  addOldSpelling(cmd, "--sizes", grids, option, check);
 }
 
 // A comma-separated list option with its default shown and each value checked.
@@ -22,11 +56,11 @@ CLI::Option* addListOption(CLI::App* cmd, const std::string& name, std::vector<T
 void addSimBench(CLI::App* bench, BenchSimOptions& o) {
   CLI::App* sim = bench->add_subcommand(
       "sim", "Water stepper: GPU (one step per dispatch, tiled) against an OpenMP C++ loop, cells/s and error");
-  addListOption(sim, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 8192u));
+  addGridsOption(sim, o.sizes, 8192u);
   addOutputOptions(sim, o.csv, o.plot);
   sim->add_option("--min-time", o.minTime, "Seconds measured per case")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 60.0));
+      ->check(inRange(0.01, 60.0));
   addGpuOptions(sim, o.validate, o.device);
 }
 
@@ -34,14 +68,14 @@ void addTilesBench(CLI::App* bench, BenchTilesOptions& o) {
   CLI::App* tiles = bench->add_subcommand("tiles",
                                           "Water stepper on active tiles: ms per step over all tiles, over the active "
                                           "list and with the one-step kernel, against the fraction of tiles active");
-  addListOption(tiles, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 8192u));
-  addListOption(tiles, "--radii", o.radii, "Drop radii as fractions of the side (0: calm water)", CLI::Range(0.0, 2.0));
+  addGridsOption(tiles, o.sizes, 8192u);
+  addListOption(tiles, "--radii", o.radii, "Drop radii as fractions of the side (0: calm water)", inRange(0.0, 2.0));
   tiles->add_option("--steps", o.steps, "Steps per timed submission, right after the drop")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   tiles->add_option("--repeats", o.repeats, "Timed submissions per case; the median is reported")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   addOutputOptions(tiles, o.csv, o.plot);
   addGpuOptions(tiles, o.validate, o.device);
 }
@@ -50,10 +84,10 @@ void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
   CLI::App* wake = bench->add_subcommand(
       "wake",
       "A sphere crossing the pool: high-wavenumber share, steepest slope and crest of its wake against ms per step");
-  addListOption(wake, "--sizes", o.sizes, "Grid sides to measure", CLI::Range(16u, 2048u));
-  addListOption(wake, "--speeds", o.speeds, "Sphere speeds as fractions of the wave speed", CLI::Range(0.05, 2.0));
+  addGridsOption(wake, o.sizes, 2048u);
+  addListOption(wake, "--speeds", o.speeds, "Sphere speeds as fractions of the wave speed", inRange(0.05, 2.0));
   addListOption(wake, "--grid-dampings", o.gridDampings, "Grid damping kappa values in 1/s to compare",
-                CLI::Range(0.0, 1e4));
+                inRange(0.0, 1e4));
   addOutputOptions(wake, o.csv, o.plot);
   addGpuOptions(wake, o.validate, o.device);
 }
@@ -62,19 +96,15 @@ void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
   CLI::App* water = bench->add_subcommand(
       "water",
       "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
-  water->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  water->add_option("--resolutions", o.resolutions, "Image sizes WxH, each side 8 to 4096")
-      ->delimiter(',')
-      ->capture_default_str();
+  addSceneSourceOptions(water, o.scene, "Scene file (JSON); default: the built-in scene");
+  addSizesOption(water, o.resolutions);
   water->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
   water->add_option("--samples", o.samples, "Samples per pixel of the reference")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 4096u));
+      ->check(inRange(1u, 4096u));
   water->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   addOutputOptions(water, o.csv, o.plot);
   addGpuOptions(water, o.validate, o.device);
 }
@@ -82,14 +112,12 @@ void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
 void addSsaoBench(CLI::App* bench, BenchSsaoOptions& o) {
   CLI::App* ssao = bench->add_subcommand(
       "ssao", "SSAO settings and presets on one frame: GPU ms of the AO passes against error from ray-traced AO");
-  ssao->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  ssao->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  addSceneSourceOptions(ssao, o.scene, "Scene file (JSON); default: the built-in scene");
+  addSizeOption(ssao, o.resolution);
   ssao->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
   ssao->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   addOutputOptions(ssao, o.csv, o.plot);
   addGpuOptions(ssao, o.validate, o.device);
 }
@@ -99,13 +127,11 @@ void addFrameBench(CLI::App* bench, BenchFrameOptions& o) {
       "frame",
       "Scene variants as frame sequences with skipping on and off: GPU ms per frame and the passes, "
       "dispatches, draws and workgroups recorded");
-  frame->add_option("--scene", o.scenePath, "Scene file (JSON) the variants start from; default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  frame->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
+  addSceneSourceOptions(frame, o.scene, "Scene file (JSON) the variants start from; default: the built-in scene");
+  addSizeOption(frame, o.resolution);
   frame->add_option("--frames", o.frames, "Timed frames of each sequence (frames 1..N, after frame 0)")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 100000u));
+      ->check(inRange(1u, 100000u));
   addOutputOptions(frame, o.csv, o.plot);
   addGpuOptions(frame, o.validate, o.device);
 }
@@ -114,15 +140,11 @@ void addPassesBench(CLI::App* bench, BenchPassesOptions& o) {
   CLI::App* passes = bench->add_subcommand(
       "passes",
       "Where a frame's time goes: each pass's wall ms (submitted on its own) and the frame's fps, per resolution");
-  passes->add_option("--scene", o.scenePath, "Scene file (JSON); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  passes->add_option("--resolutions", o.resolutions, "Image sizes WxH, each side 8 to 4096")
-      ->delimiter(',')
-      ->capture_default_str();
+  addSceneSourceOptions(passes, o.scene, "Scene file (JSON); default: the built-in scene");
+  addSizesOption(passes, o.resolutions);
   passes->add_option("--frames", o.frames, "Timed frames of each kind (whole, pass by pass) per resolution")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 100000u));
+      ->check(inRange(1u, 100000u));
   addOutputOptions(passes, o.csv, o.plot);
   addGpuOptions(passes, o.validate, o.device);
 }
@@ -132,25 +154,23 @@ void addIblBench(CLI::App* bench, BenchIblOptions& o) {
       "ibl",
       "Sky irradiance (SH9) by importance and by uniform sampling, and the glossy prefilter by environment, lobe and "
       "MIS sampling: samples against error against GPU ms");
-  ibl->add_option("--scene", o.scenePath, "Scene file (JSON) whose procedural sky to use; default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
+  addSceneSourceOptions(ibl, o.scene, "Scene file (JSON) whose procedural sky to use; default: the built-in scene");
   ibl->add_option("--width", o.width, "Environment texels across (even; height is half)")
       ->capture_default_str()
-      ->check(CLI::Range(16u, 8192u));
-  addListOption(ibl, "--samples", o.samples, "Sample counts to measure", CLI::Range(1u, 1u << 22));
+      ->check(inRange(16u, 8192u));
+  addListOption(ibl, "--samples", o.samples, "Sample counts to measure", inRange(1u, 1u << 22));
   ibl->add_option("--rotations", o.rotations, "Independent sample sets per case (errors: RMS over them)")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   ibl->add_option("--repeats", o.repeats, "Timed CDF builds; the median is reported")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   addOutputOptions(ibl, o.csv, o.plot);
   ibl->add_option("--glossy-samples", o.glossySamples,
                   "Glossy prefilter samples per texel to measure (MIS: half from the environment, half from the lobe)")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(CLI::Range(2u, 65536u));
+      ->check(inRange(2u, 65536u));
   ibl->add_option("--glossy-csv", o.glossyCsv, "CSV output of the glossy prefilter")
       ->type_name("PATH")
       ->capture_default_str();
@@ -164,19 +184,16 @@ void addGlassBench(CLI::App* bench, BenchGlassOptions& o) {
   CLI::App* glass = bench->add_subcommand(
       "glass",
       "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");
-  glass
-      ->add_option("--scene", o.scenePath,
-                   "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  glass->add_option("--resolution", o.resolution, "Image size WxH, each side 8 to 4096")->capture_default_str();
-  addListOption(glass, "--steps", o.steps, "Binary-search steps to measure, each 1 to 64", CLI::Range(1u, 64u));
+  addSceneSourceOptions(glass, o.scene,
+                        "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground");
+  addSizeOption(glass, o.resolution);
+  addListOption(glass, "--steps", o.steps, "Binary-search steps to measure, each 1 to 64", inRange(1u, 64u));
   glass->add_option("--samples", o.samples, "Samples per pixel of the reference")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 4096u));
+      ->check(inRange(1u, 4096u));
   glass->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 1000u));
+      ->check(inRange(1u, 1000u));
   addOutputOptions(glass, o.csv, o.plot);
   addGpuOptions(glass, o.validate, o.device);
 }

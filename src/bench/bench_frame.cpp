@@ -76,7 +76,7 @@ int runBenchFrame(const BenchFrameOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   const Resolution r = parseResolution(o.resolution, "bench frame");
   if (o.frames < 1) throw std::runtime_error("bench frame: --frames must be at least 1");
-  const scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene base = loadScene(o.scene, scene::defaultScene());
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
 

@@ -1,11 +1,12 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchFrameOptions {
-  std::string scenePath;  // empty: the built-in scene
+  SceneSource scene;  // --scene and --set; no file: the built-in scene
   std::string resolution = "640x360";
   uint32_t frames = 20;  // timed frames of each sequence (after frame 0, which warms up)
   std::string csv = "bench_frame.csv";

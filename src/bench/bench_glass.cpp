@@ -34,7 +34,7 @@ struct Measured {
 int runBenchGlass(const BenchGlassOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   const Resolution r = parseResolution(o.resolution, "bench glass");
-  const scene::Scene base = o.scenePath.empty() ? render::glassSphereView() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene base = loadScene(o.scene, render::glassSphereView());
   const uint32_t frame = 0;
   const scene::Scene placed = scene::sceneAt(base, 0.0f);
   if (std::none_of(placed.spheres.begin(), placed.spheres.end(), scene::isGlass)) {

@@ -2,11 +2,12 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchGlassOptions {
-  std::string scenePath;  // empty: render::glassSphereView()
+  SceneSource scene;  // --scene and --set; no file: render::glassSphereView()
   std::string resolution = "320x180";
   std::vector<uint32_t> steps{1, 2, 4, 8, 16, 32};  // binary-search steps for the exit point
   uint32_t samples = 16;                            // of the reference

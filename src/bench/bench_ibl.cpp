@@ -52,7 +52,7 @@ int runBenchIbl(const BenchIblOptions& o) {
   if (o.width < 16 || o.width > 8192 || o.width % 2) {
     throw std::runtime_error("bench ibl: --width " + std::to_string(o.width) + " is not even and 16 to 8192");
   }
-  const scene::Scene s = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene s = loadScene(o.scene, scene::defaultScene());
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   const render::SkyImage image = render::proceduralSkyImage(s.sky, o.width);

@@ -2,11 +2,12 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchIblOptions {
-  std::string scenePath;  // empty: the built-in scene
+  SceneSource scene;      // --scene and --set; no file: the built-in scene
   uint32_t width = 1024;  // environment texels across (height: half)
   std::vector<uint32_t> samples{16, 64, 256, 1024, 4096, 16384, 65536};
   uint32_t rotations = 8;  // independent sample sets per case (errors: RMS over them)

@@ -6,6 +6,8 @@
 
 #include "base/atomic_file.hpp"
 #include "bench/plot.hpp"
+#include "cli/frame_size.hpp"
+#include "cli/usage_error.hpp"
 
 namespace tp::app {
 
@@ -28,12 +30,9 @@ void commitBenchCsv(base::AtomicFile& file, std::ofstream& csv, const std::strin
 }
 
 Resolution parseResolution(const std::string& text, const std::string& bench) {
-  unsigned w = 0, h = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 8 || h < 8 || w > 4096 || h > 4096) {
-    throw std::runtime_error(bench + ": resolution '" + text + "' is not WxH with sides 8 to 4096");
-  }
-  return {w, h};
+  const auto size = parseFrameSize(text, kMinBenchSide, kMaxBenchSide);
+  if (!size) throw UsageError(bench + ": --size " + text + " is not WxH with sides 8 to 4096");
+  return {size->width, size->height};
 }
 
 std::string formatNumber(const char* format, double x) {

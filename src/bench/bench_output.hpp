@@ -20,8 +20,11 @@ void checkBenchOutputs(const std::string& csv, const std::string& plot);
 // then plots it with tools/<plotScript> unless `plot` is empty.
 void commitBenchCsv(base::AtomicFile& file, std::ofstream& csv, const std::string& plotScript, const std::string& plot);
 
-// An image size given as WxH, each side 8 to 4096; `bench` names the
-// benchmark in the error.
+// The sides a benchmark's image may have: --size WxH, each side within.
+constexpr uint32_t kMinBenchSide = 8, kMaxBenchSide = 4096;
+
+// An image size given as WxH, each side kMinBenchSide to kMaxBenchSide;
+// `bench` names the benchmark in the error.
 struct Resolution {
   uint32_t width = 0, height = 0;
 };

@@ -54,7 +54,7 @@ int runBenchPasses(const BenchPassesOptions& o) {
   std::vector<Resolution> resolutions;
   for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r, "bench passes"));
   if (o.frames < 1) throw std::runtime_error("bench passes: --frames must be at least 1");
-  const scene::Scene s = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene s = loadScene(o.scene, scene::defaultScene());
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
 

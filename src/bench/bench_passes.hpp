@@ -2,11 +2,12 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchPassesOptions {
-  std::string scenePath;  // empty: the built-in scene
+  SceneSource scene;  // --scene and --set; no file: the built-in scene
   std::vector<std::string> resolutions{"1280x720", "640x360", "320x180"};
   uint32_t frames = 10;  // timed frames of each kind per resolution
   std::string csv = "bench_passes.csv";

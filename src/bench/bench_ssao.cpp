@@ -95,7 +95,7 @@ void markParetoFront(std::vector<Measured>& results) {
 int runBenchSsao(const BenchSsaoOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   const Resolution r = parseResolution(o.resolution, "bench ssao");
-  const scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene base = loadScene(o.scene, scene::defaultScene());
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
   const std::vector<Case> cases = benchCases();

@@ -1,11 +1,12 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchSsaoOptions {
-  std::string scenePath;  // empty: the built-in scene
+  SceneSource scene;  // --scene and --set; no file: the built-in scene
   std::string resolution = "640x360";
   uint32_t frame = 10;
   uint32_t repeats = 5;  // timed frames per case (the median is reported)

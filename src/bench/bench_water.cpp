@@ -99,7 +99,7 @@ int runBenchWater(const BenchWaterOptions& o) {
   checkBenchOutputs(o.csv, o.plot);
   std::vector<Resolution> resolutions;
   for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r, "bench water"));
-  scene::Scene base = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  scene::Scene base = loadScene(o.scene, scene::defaultScene());
   base.render.caustics = false;  // the reference leaves them out
   if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");
 

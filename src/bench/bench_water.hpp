@@ -2,11 +2,12 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include "cli/scene_options.hpp"
 
 namespace tp::app {
 
 struct BenchWaterOptions {
-  std::string scenePath;  // empty: the built-in scene
+  SceneSource scene;  // --scene and --set; no file: the built-in scene
   std::vector<std::string> resolutions{"160x90", "320x180", "640x360"};
   uint32_t frame = 10;
   uint32_t samples = 16;  // of the reference

@@ -1,10 +1,12 @@
 #include "cli/export_command.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 #include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/number_checks.hpp"
 #include "cli/sequence_progress.hpp"
 #include "cli/usage_error.hpp"
 #include "io/mesh_io.hpp"
@@ -54,11 +56,10 @@ int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF");
-  cmd->add_option("--scene", o.scenePath, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene")
-      ->type_name("PATH")
-      ->check(CLI::ExistingFile);
-  CLI::Option* frame =
-      cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")->capture_default_str();
+  addSceneSourceOptions(cmd, o.scene, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene");
+  CLI::Option* frame = cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
+                           ->capture_default_str()
+                           ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
   cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
       ->type_name("A-B")
       ->excludes(frame);
@@ -80,7 +81,7 @@ int runExport(const ExportOptions& o) {
     throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj, .ply or .glb");
   }
   io::checkMeshOutput(range ? framePath(o.out, range->first) : o.out);
-  const scene::Scene scene = o.scenePath.empty() ? scene::defaultScene() : scene::loadSceneFile(o.scenePath);
+  const scene::Scene scene = loadScene(o.scene, scene::defaultScene());
   if (range) return exportSequence(o, scene, *range);
   std::optional<sim::WaterState> water;
   int exitCode = 0;

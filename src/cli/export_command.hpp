@@ -2,10 +2,12 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "cli/scene_options.hpp"
+
 namespace tp::app {
 
 struct ExportOptions {
-  std::string scenePath;
+  SceneSource scene;  // --scene and --set
   uint32_t frame = 0;
   std::string frames;  // --frames A-B: a mesh sequence, one file per frame
   std::string out;

@@ -4,12 +4,19 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/rational.hpp"
+#include "cli/build_version.hpp"
+#include "cli/frame_channels.hpp"
+#include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
 #include "reference/reference_ao.hpp"
 
 namespace tp::app {
 namespace {
+
+// Video rates are n/1 or n*1000/1001 (NTSC's 30000/1001).
+constexpr int32_t kFpsMaxDenominator = 1001;
 
 // One float per pixel of a `width` x `height` image, nearest-sampled to the
 // frame's size (the raw AO at half resolution).
@@ -22,40 +29,6 @@ std::vector<float> toFrameSize(const std::vector<float>& values, uint32_t width,
     }
   }
   return out;
-}
-
-// RGBA, then each requested AOV's channels (layer.channel names), interleaved.
-// `ao`, `aoRaw`, `aoRef`: one value per pixel, where requested.
-io::FloatImage withAovs(const render::RenderedFrame& frame, const std::vector<std::string>& aovs,
-                        const std::vector<float>& aoRaw, const std::vector<float>& aoRef) {
-  struct Channel {
-    std::string name;
-    const std::vector<float>* source;
-    int component;
-    int stride;
-  };
-  std::vector<Channel> channels{
-      {"R", &frame.rgba, 0, 4}, {"G", &frame.rgba, 1, 4}, {"B", &frame.rgba, 2, 4}, {"A", &frame.rgba, 3, 4}};
-  if (wants(aovs, "Z")) channels.push_back({"Z", &frame.position, 3, 4});
-  if (wants(aovs, "N")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("N.") + "xyz"[c], &frame.normal, c, 4});
-  }
-  if (wants(aovs, "P")) {
-    for (int c = 0; c < 3; ++c) channels.push_back({std::string("P.") + "xyz"[c], &frame.position, c, 4});
-  }
-  if (wants(aovs, "ao")) channels.push_back({"ao", &frame.ao, 0, 1});
-  if (wants(aovs, "ao_raw")) channels.push_back({"ao_raw", &aoRaw, 0, 1});
-  if (wants(aovs, "ao_ref")) channels.push_back({"ao_ref", &aoRef, 0, 1});
-  io::FloatImage image{frame.width, frame.height, {}, {}};
-  for (const auto& c : channels) image.channels.push_back(c.name);
-  const size_t pixels = size_t(frame.width) * frame.height;
-  image.pixels.resize(pixels * channels.size());
-  for (size_t p = 0; p < pixels; ++p) {
-    for (size_t c = 0; c < channels.size(); ++c) {
-      image.pixels[p * channels.size() + c] = (*channels[c].source)[p * channels[c].stride + channels[c].component];
-    }
-  }
-  return image;
 }
 
 // Ambient occlusion ray traced from the frame's own G-buffer, the ground truth
@@ -79,11 +52,12 @@ bool wants(const std::vector<std::string>& aovs, const char* name) {
 RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
   const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
   if (ao && (o.reference || !scene.ao.enabled)) {
-    throw std::runtime_error(
+    throw UsageError(
         "--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
         "nor with a scene whose ao.enabled is false");
   }
-  const bool geometry = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P");
+  // A transparent sky needs to know where nothing is hit: the positions' pass.
+  const bool geometry = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P") || o.transparentSky;
   return {{.aovs = geometry, .skipping = !o.noSkip}, {.hdr = true, .ldr = !o.png.empty(), .aovs = geometry, .ao = ao}};
 }
 
@@ -93,11 +67,21 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
   if (wants(o.aovs, "ao_raw"))
     aoRaw = toFrameSize(frame.aoRaw, frame.aoWidth, frame.aoHeight, frame.width, frame.height);
   if (wants(o.aovs, "ao_ref")) aoRef = referenceAo(scene, frame, frameNumber);
-  io::FloatImage image = withAovs(frame, o.aovs, aoRaw, aoRef);
+  const FrameChannelOptions channels{
+      .aovs = o.aovs, .farPlane = scene.camera.farPlane, .transparentSky = o.transparentSky};
+  io::FloatImage image = frameChannels(frame, channels, aoRaw, aoRef);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
-  io::ExrAttributes attributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC};
-  io::writeExr(exr, image, types, attributes);
+  const io::ExrAttributes attributes{
+      .hasCamera = true,
+      .worldToCamera = frame.worldToCamera,
+      .worldToNDC = frame.worldToNDC,
+      .linearRec709 = true,
+      .software = versionText(),
+      .frame = frameNumber,
+      .framesPerSecond = base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator),
+      .compression = o.compression};
+  if (!exr.empty()) io::writeExr(exr, image, types, attributes);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }
 

@@ -22,9 +22,10 @@ struct RasterPlan {
 // not run (--reference, --no-ao, a scene with ao.enabled false).
 RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene);
 
-// Writes a rendered frame as `render` writes it: an EXR at `exr` (RGBA, half
-// unless --float, then the AOVs asked for as float channels, with the camera
-// attributes; ao_ref ray traced here from the frame's G-buffer), and the
+// Writes a rendered frame as `render` writes it: an EXR at `exr` unless it
+// is empty (RGBA, half unless --float, then the AOVs asked for as float
+// channels, with the camera, colour, software and frame attributes, in
+// --compression; ao_ref ray traced here from the frame's G-buffer), and the
 // tonemapped PNG at `png` unless it is empty; each through a temporary file.
 void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
                 uint32_t frameNumber, const std::string& exr, const std::string& png);

@@ -3,14 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
 #include "base/atomic_file.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/frame_size.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/number_checks.hpp"
 #include "cli/profile_table.hpp"
 #include "cli/render_sequence.hpp"
+#include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
 #include "reference/image_error.hpp"
@@ -39,17 +43,21 @@ render::RenderedFrame renderReferenceFrame(GpuSession& session, const scene::Sce
 }  // namespace
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
-  CLI::App* cmd = app.add_subcommand("render", "Render a frame offscreen to EXR (linear RGBA) and optionally PNG");
+  CLI::App* cmd = app.add_subcommand(
+      "render",
+      "Render a frame, or a sequence, offscreen to EXR (linear RGBA and AOVs), PNG (tonemapped sRGB) or both");
   addSceneOptions(cmd, o.scene);
-  cmd->add_option("--width", o.width, "Image width in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(1u, kMaxFrameSide));
-  cmd->add_option("--height", o.height, "Image height in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(1u, kMaxFrameSide));
+  cmd->add_option("--size", o.size, "Image size, e.g. 1920x1080 (default 1280x720)")
+      ->type_name("WxH")
+      ->check(frameSizeCheck(1, kMaxFrameSide));
+  // The old spelling of --size, out of --help (docs/command-line.md).
+  for (auto [name, side] : {std::pair{"--width", &o.oldWidth}, std::pair{"--height", &o.oldHeight}}) {
+    cmd->add_option(name, *side, "the old spelling of --size, one side")->group("")->check(inRange(1u, kMaxFrameSide));
+  }
   auto* frame = cmd->add_option("--frame", o.frame,
                                 "Frame number: the water after N frames of water.frame_time from the scene's start")
-                    ->capture_default_str();
+                    ->capture_default_str()
+                    ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
   auto* frames =
       cmd->add_option("--frames", o.frames,
                       "Render the frames A to B (A-B, both included), each to --out with its #### replaced by the "
@@ -62,7 +70,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                   "With --frames: save the water's state after every frame that is a multiple of K, in "
                   "--checkpoint-dir")
       ->type_name("K")
-      ->check(CLI::Range(1u, 1000000u))
+      ->check(inRange(1u, 1000000u))
       ->needs(frames);
   cmd->add_option("--checkpoint-dir", o.checkpointDir,
                   "With --frames: where checkpoints are saved (water.NNNNNN.exr in `sim`'s format, and .json); a "
@@ -74,10 +82,14 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                 "With --frames: leave out the frames whose files are already there and whole (a run stopped or "
                 "split goes on where it ended)")
       ->needs(frames);
-  cmd->add_option("--out", o.out, "Output EXR path (written via a temporary file); with --frames, a pattern with ####")
-      ->type_name("PATH")
-      ->capture_default_str();
-  cmd->add_option("--png", o.png, "Also write a tonemapped sRGB PNG preview here; with --frames, a pattern with ####")
+  cmd->add_option("--out", o.outs,
+                  "Output file, its format from its extension: .exr (linear RGBA and the AOVs) or .png (the "
+                  "tonemapped 8-bit sRGB frame); give one of each for both; default render.exr; with --frames, a "
+                  "pattern with ####; each written via a temporary file")
+      ->type_name("PATH");
+  cmd->add_option("--png", o.pngAlso,
+                  "Also write a PNG here, beside the EXR (render.exr unless --out names one): the old spelling of "
+                  "--out PATH.png")
       ->type_name("PATH");
   auto* half = cmd->add_flag("--half", o.halfOutput, "Write 16-bit half EXR channels (default)");
   auto* full = cmd->add_flag("--float", o.floatOutput, "Write 32-bit float EXR channels");
@@ -91,13 +103,22 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                 "Record every pass the scene has, even those this frame does not need (the frame to compare "
                 "against; docs/frame-skipping.md)");
   cmd->add_option("--aov", o.aovs,
-                  "Extra float32 EXR channels, comma-separated: Z (view depth), N (N.x N.y N.z world normal), "
-                  "P (P.x P.y P.z world position); infinite Z and P where nothing is hit. With AO on: ao (after "
-                  "blur and upsample), ao_raw (unblurred, at the AO resolution), ao_ref (ray traced from the same "
-                  "G-buffer with Embree, 1024 rays per pixel; slow)")
+                  "Extra float32 EXR channels in layers, comma-separated: Z (view depth), N (N.X N.Y N.Z world "
+                  "normal), P (P.X P.Y P.Z world position); where nothing is hit Z is the camera's far plane and P "
+                  "on it. With AO on: ao (AO.Y, after blur and upsample), ao_raw (AO_raw.Y, unblurred, at the AO "
+                  "resolution), ao_ref (AO_ref.Y, ray traced from the same G-buffer with Embree, 1024 rays per "
+                  "pixel; slow)")
       ->delimiter(',')
       ->type_name("LIST")
       ->check(CLI::IsMember({"Z", "N", "P", "ao", "ao_raw", "ao_ref"}));
+  cmd->add_flag("--transparent-sky", o.transparentSky,
+                "Write RGBA 0 in the EXR where only the sky is seen, for compositing over a plate (the sky still "
+                "lights and is reflected; the PNG keeps it)");
+  cmd->add_option("--compression", o.compression,
+                  "EXR compression: zip, piz, dwaa (lossy on R G B and the AO layers) or none")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->check(CLI::IsMember(io::exrCompressions()));
   cmd->add_flag("--reference", o.reference,
                 "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
                 "caustics): the ground truth for error figures; slow")
@@ -106,21 +127,51 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   profile->excludes(frames);
   cmd->add_option("--samples", o.samples, "Samples per pixel of --reference")
       ->capture_default_str()
-      ->check(CLI::Range(1u, 65536u));
+      ->check(inRange(1u, 65536u));
   return cmd;
 }
 
-int runRender(const RenderOptions& o) {
+RenderOptions resolveOutputs(const RenderOptions& options) {
+  RenderOptions o = options;
+  if (!o.size.empty()) {
+    if (o.oldWidth > 0 || o.oldHeight > 0) throw UsageError("--size " + o.size + ": not with --width or --height");
+    const FrameSize size = *parseFrameSize(o.size, 1, kMaxFrameSide);  // checked by the parser
+    o.width = size.width;
+    o.height = size.height;
+  }
+  if (o.oldWidth > 0) o.width = o.oldWidth;
+  if (o.oldHeight > 0) o.height = o.oldHeight;
+  std::vector<std::string> outs = o.outs;
+  if (outs.empty()) outs.push_back("render.exr");
+  if (!o.pngAlso.empty()) {
+    if (!base::hasExtension(o.pngAlso, ".png")) throw UsageError("--png " + o.pngAlso + ": the path must end in .png");
+    outs.push_back(o.pngAlso);
+  }
+  o.exr.clear();
+  o.png.clear();
+  for (const std::string& out : outs) {
+    std::string* slot = base::hasExtension(out, ".exr") ? &o.exr : base::hasExtension(out, ".png") ? &o.png : nullptr;
+    if (!slot) {
+      throw UsageError("--out " + out + ": the format comes from the extension, which must be .exr or .png");
+    }
+    if (!slot->empty()) throw UsageError("--out " + out + ": a second output of its format (one of each: .exr, .png)");
+    *slot = out;
+  }
+  if (!o.aovs.empty() && o.exr.empty()) throw UsageError("--aov: the AOVs are EXR channels; add --out PATH.exr");
+  return o;
+}
+
+int runRender(const RenderOptions& options) {
+  const RenderOptions o = resolveOutputs(options);
   checkFramePixels(o.width, o.height);
   if (!o.frames.empty()) return runRenderSequence(o);
   // Check every output before any work, so a bad path costs nothing and leaves nothing.
-  base::requireExtension(o.out, ".exr");
-  base::checkWritable(o.out);
-  if (!o.png.empty()) {
-    base::requireExtension(o.png, ".png");
-    base::checkWritable(o.png);
+  for (const std::string& path : {o.exr, o.png}) {
+    if (!path.empty()) base::checkWritable(path);
   }
-  const scene::Scene scene = loadScene(o.scene);
+  // The camera where its path or turntable puts it at this frame's time.
+  scene::Scene scene = loadScene(o.scene);
+  scene.camera = scene::cameraAt(scene.camera, float(o.frame) * scene.water.frameTime);
   RasterPlan plan = rasterPlan(o, scene);
   GpuSession session(o.validate, o.device);
   render::RenderedFrame frame;
@@ -138,11 +189,15 @@ int runRender(const RenderOptions& o) {
     plan.request.frame = o.frame;
     frame = renderer.render(plan.request);
   }
-  writeFrame(o, scene, frame, o.frame, o.out, o.png);
-  std::printf("wrote %s (%ux%u, %s) on %s\n", o.out.c_str(), frame.width, frame.height,
-              o.floatOutput ? "float" : "half",
-              o.reference ? "the CPU (reference)" : session.context().deviceName().c_str());
-  if (!o.png.empty()) std::printf("wrote %s\n", o.png.c_str());
+  writeFrame(o, scene, frame, o.frame, o.exr, o.png);
+  const std::string device = o.reference ? "the CPU (reference)" : session.context().deviceName();
+  if (!o.exr.empty()) {
+    std::printf("wrote %s (%ux%u, %s) on %s\n", o.exr.c_str(), frame.width, frame.height,
+                o.floatOutput ? "float" : "half", device.c_str());
+  }
+  if (!o.png.empty()) {
+    std::printf("wrote %s (%ux%u) on %s\n", o.png.c_str(), frame.width, frame.height, device.c_str());
+  }
   if (o.profile) printProfile(frame);
   return session.finish();
 }

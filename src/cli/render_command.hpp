@@ -8,11 +8,17 @@
 namespace tp::app {
 
 struct RenderOptions {
-  SceneChoice scene;  // --scene, --no-ao, --preset
+  SceneChoice scene;  // --scene, --set, --no-ao, --preset
   uint32_t width = 1280;
   uint32_t height = 720;
+  std::string size;        // --size WxH, resolved into width and height
+  uint32_t oldWidth = 0;   // --width, the old spelling of --size's width; 0: not given
+  uint32_t oldHeight = 0;  // --height, likewise
   uint32_t frame = 0;
-  std::string out = "render.exr";
+  std::vector<std::string> outs;  // --out, each .exr or .png; none: render.exr
+  std::string pngAlso;            // --png, the old spelling of a second --out PATH.png
+  // The outputs resolveOutputs finds in outs and pngAlso; an empty one is not written.
+  std::string exr;
   std::string png;
   bool floatOutput = false;
   bool halfOutput = false;
@@ -27,10 +33,18 @@ struct RenderOptions {
   uint32_t checkpointEvery = 0;   // with frames: save the water every K frames in checkpointDir
   std::string checkpointDir;      // with frames: where checkpoints are saved and resumed from
   bool resume = false;            // with frames: leave out the frames whose files exist and are whole
+  // How the EXR is written.
+  std::string compression = "zip";  // one of io::exrCompressions()
+  bool transparentSky = false;      // RGBA 0 where nothing is hit
 };
 
 // Adds `tidepool render` and its options to the command line.
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
+
+// The options with --size, --out and --png resolved into width, height, exr
+// and png. Throws UsageError on an extension that names no format, two
+// outputs of one format, or --aov without an EXR.
+RenderOptions resolveOutputs(const RenderOptions& options);
 
 // Returns the process exit code; throws std::exception on failure.
 int runRender(const RenderOptions& options);

@@ -16,6 +16,7 @@
 #include "cli/gpu_session.hpp"
 #include "cli/interrupt_guard.hpp"
 #include "cli/sequence_progress.hpp"
+#include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "render/renderer.hpp"
 
@@ -44,38 +45,30 @@ const char* signalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTE
 
 int runRenderSequence(const RenderOptions& o) {
   const FrameRange range = parseFrameRange(o.frames);
-  if (!hasFrameField(o.out)) {
-    throw std::runtime_error("--out " + o.out +
-                             ": with --frames the path needs #### where the frame number goes, "
-                             "e.g. frames/shot.####.exr");
+  for (const std::string& pattern : {o.exr, o.png}) {
+    if (pattern.empty()) continue;
+    if (!hasFrameField(pattern)) {
+      throw UsageError("--frames " + o.frames + ": the output " + pattern +
+                       " needs #### where the frame number goes, e.g. frames/shot.####.exr");
+    }
+    base::checkWritable(framePath(pattern, range.first));
   }
-  if (!o.png.empty() && !hasFrameField(o.png)) {
-    throw std::runtime_error("--png " + o.png + ": with --frames the path needs #### where the frame number goes");
-  }
-  base::requireExtension(o.out, ".exr");
-  base::checkWritable(framePath(o.out, range.first));
-  if (!o.png.empty()) {
-    base::requireExtension(o.png, ".png");
-    base::checkWritable(framePath(o.png, range.first));
-  }
-  if (o.checkpointEvery > 0 && o.checkpointDir.empty())
-    throw std::runtime_error("--checkpoint-every needs --checkpoint-dir");
+  if (o.checkpointEvery > 0 && o.checkpointDir.empty()) throw UsageError("--checkpoint-every needs --checkpoint-dir");
   if (!o.checkpointDir.empty()) {
     if (!std::filesystem::is_directory(o.checkpointDir)) {
-      throw std::runtime_error("--checkpoint-dir " + o.checkpointDir + ": not a folder");
+      throw UsageError("--checkpoint-dir " + o.checkpointDir + ": not a folder");
     }
     base::checkWritable((std::filesystem::path(o.checkpointDir) / "water.000000.json").string());
   }
   const scene::Scene scene = loadScene(o.scene);
   RasterPlan plan = rasterPlan(o, scene);
   if (!o.checkpointDir.empty() && !scene.water.enabled) {
-    throw std::runtime_error("--checkpoint-dir: the scene has no water to checkpoint");
+    throw UsageError("--checkpoint-dir: the scene has no water to checkpoint");
   }
 
   std::vector<uint32_t> todo;
   for (uint32_t f = range.first;; ++f) {
-    if (!(o.resume &&
-          alreadyWritten(framePath(o.out, f), o.png.empty() ? "" : framePath(o.png, f), o.width, o.height))) {
+    if (!(o.resume && alreadyWritten(framePath(o.exr, f), framePath(o.png, f), o.width, o.height))) {
       todo.push_back(f);
     }
     if (f == range.last) break;
@@ -108,15 +101,17 @@ int runRenderSequence(const RenderOptions& o) {
     for (const uint32_t f : todo) {
       if (InterruptGuard::received()) break;
       plan.request.frame = f;
+      if (scene::isAnimated(scene.camera))
+        renderer.setCamera(scene::cameraAt(scene.camera, float(f) * scene.water.frameTime));
       auto frame = std::make_shared<const render::RenderedFrame>(renderer.render(plan.request));
       std::optional<sim::WaterCheckpoint> checkpoint;
       if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0) checkpoint = renderer.checkpoint();
       writer.start([&, frame, f, checkpoint = std::move(checkpoint)] {
-        const std::string exr = framePath(o.out, f);
-        writeFrame(o, scene, *frame, f, exr, o.png.empty() ? "" : framePath(o.png, f));
+        const std::string exr = framePath(o.exr, f), png = framePath(o.png, f);
+        writeFrame(o, scene, *frame, f, exr, png);
         if (checkpoint) saveCheckpoint(o.checkpointDir, *checkpoint, fingerprint);
         ++written;
-        progress.rendered(f, exr);
+        progress.rendered(f, exr.empty() ? png : exr);
       });
     }
     writer.finish();

@@ -1,4 +1,6 @@
 #include "cli/sim_command.hpp"
+#include "cli/number_checks.hpp"
+#include "cli/usage_error.hpp"
 #include "io/water_state_file.hpp"
 
 #include <unistd.h>
@@ -18,7 +20,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("sim", "Run the water simulation headless and write its state as EXR (channels u, v)");
   cmd->add_option("--grid", o.grid, "Cells per side (default 256, or the --init EXR's size)")
-      ->check(CLI::Range(2u, 16384u));
+      ->check(inRange(2u, 16384u));
   cmd->add_option("--extent", o.extent, "Side of the square domain in metres; h = extent / grid")
       ->capture_default_str();
   cmd->add_option("--steps", o.steps, "Steps of --dt, or frames of --frame-time")->capture_default_str();
@@ -51,16 +53,16 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
       ->check(CLI::IsMember({"one", "tiled", "active"}));
   cmd->add_option("--halo", o.halo, "Steps per dispatch of the tiled kernel")
       ->capture_default_str()
-      ->check(CLI::Range(1u, sim::GpuStepper::kMaxHalo));
+      ->check(inRange(1u, sim::GpuStepper::kMaxHalo));
   cmd->add_option("--health-every", o.healthEvery, "Steps between health checks (max |u|, volume, energy, NaN)")
       ->capture_default_str()
-      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+      ->check(inRange(uint64_t(1), uint64_t(1) << 40));
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 
 int runSim(const CLI::App& command, const SimOptions& o) {
-  base::requireExtension(o.out, ".exr");
+  asUsageError([&] { base::requireExtension(o.out, ".exr"); });
   base::checkWritable(o.out);
   sim::WaterParams params{.n = o.grid,
                           .extent = o.extent,
@@ -72,7 +74,7 @@ int runSim(const CLI::App& command, const SimOptions& o) {
                           .gridDamping = o.gridDamping};
   const bool fromFile = o.init.rfind("drop:", 0) != 0 && o.init.rfind("mode:", 0) != 0;
   if (fromFile && command.count("--grid") == 0) params.n = 0;  // take the file's size
-  if (params.n != 0) sim::validate(params);
+  if (params.n != 0) asUsageError([&] { sim::validate(params); });
 
   GpuSession session(o.validate, o.device);
   const gpu::Context& ctx = session.context();
@@ -87,9 +89,12 @@ int runSim(const CLI::App& command, const SimOptions& o) {
   }
   // The time step: given, or the fewest substeps of a frame within the margin.
   const bool givenStep = command.count("--dt") > 0;
-  const uint32_t substeps = givenStep ? 1u : sim::substepsFor(params, o.frameTime);
+  uint32_t substeps = 1;
+  asUsageError([&] {
+    if (!givenStep) substeps = sim::substepsFor(params, o.frameTime);
+    sim::checkStable(params, givenStep ? o.dt : o.frameTime / substeps);
+  });
   const double dt = givenStep ? o.dt : o.frameTime / substeps;
-  sim::checkStable(params, dt);
   if (!fromFile) initial = io::initialState(o.init, params, dt);
   const uint64_t totalSteps = o.steps * substeps;
 

@@ -36,7 +36,16 @@ void writeWithOiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
   file.commit();
 }
 
+// OpenEXR's chromaticities of linear Rec.709 (sRGB's primaries): red, green,
+// blue and white (D65) as CIE xy.
+constexpr float kRec709Chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+
 }  // namespace
+
+const std::vector<std::string>& exrCompressions() {
+  static const std::vector<std::string> names{"zip", "piz", "dwaa", "none"};
+  return names;
+}
 
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
               const ExrAttributes& attributes) {
@@ -55,7 +64,24 @@ void writeExr(const std::string& path, const FloatImage& image, const std::vecto
   for (size_t c = 0; c < channels; ++c) {
     if (image.channels[c] == "A") spec.alpha_channel = int(c);
   }
-  spec.attribute("compression", "zip");
+  const auto& compressions = exrCompressions();
+  if (std::find(compressions.begin(), compressions.end(), attributes.compression) == compressions.end()) {
+    std::string known;
+    for (const std::string& name : compressions) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("EXR compression " + attributes.compression + " is not one of " + known);
+  }
+  spec.attribute("compression", attributes.compression);
+  if (attributes.linearRec709) {
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709Chromaticities);
+  }
+  if (!attributes.software.empty()) spec.attribute("software", attributes.software);
+  if (attributes.frame) spec.attribute("frame", int(*attributes.frame));
+  if (attributes.framesPerSecond) {
+    // OpenEXR's standard name; OpenImageIO's own FramesPerSecond would be
+    // written with its capital F, which other readers do not know.
+    const int fps[2] = {attributes.framesPerSecond->numerator, attributes.framesPerSecond->denominator};
+    spec.attribute("framesPerSecond", OIIO::TypeRational, fps);
+  }
   if (attributes.hasCamera) {
     // GLM's column-major storage of M is the row-major storage of M^T, which is
     // OpenEXR's row-vector form of the same transform.

@@ -1,8 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "base/rational.hpp"
 
 namespace tp::io {
 
@@ -16,16 +19,26 @@ struct FloatImage {
   std::vector<float> pixels;          // width * height * channels.size()
 };
 
+// The compressions writeExr takes, as OpenEXR names them; the first is the default.
+const std::vector<std::string>& exrCompressions();
+
 struct ExrAttributes {
   bool hasCamera = false;
   glm::mat4 worldToCamera{1.0f};  // column-vector matrices, as GLM keeps them
   glm::mat4 worldToNDC{1.0f};
+  bool linearRec709 = false;  // colour: chromaticities of Rec.709/sRGB primaries and a D65 white
+  std::string software{};     // e.g. "tidepool 0.1"; none when empty
+  std::optional<uint32_t> frame{};
+  std::optional<base::Rational> framesPerSecond{};
+  std::string compression = exrCompressions().front();
 };
 
-// Writes an OpenEXR file (zip compressed) through a temporary file renamed
-// into place, each channel as half or float (channelTypes, one per channel).
+// Writes an OpenEXR file through a temporary file renamed into place, each
+// channel as half or float (channelTypes, one per channel), with the
+// attributes' compression (one of exrCompressions(), else it throws).
 // The camera matrices become the standard m44f attributes worldToCamera and
-// worldToNDC, in OpenEXR's row-vector convention.
+// worldToNDC, in OpenEXR's row-vector convention; the others the standard
+// chromaticities and framesPerSecond, and software (string) and frame (int).
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
               const ExrAttributes& attributes = {});
 

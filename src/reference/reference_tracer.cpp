@@ -257,7 +257,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
   std::optional<SkyImage> skyImage;
   SkyLight light = proceduralSkyLight(scene.sky);
   if (!scene.sky.image.empty()) {
-    skyImage = loadSkyImage(scene.sky.image);
+    skyImage = loadSkyImage(scene.sky);
     light = skyImageLight(*skyImage);
   }
   const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);

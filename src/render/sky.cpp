@@ -11,7 +11,7 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene)
           ctx,
           {.vertexShader = "fullscreen.vert", .fragmentShader = "sky_background.frag", .colorFormats = {kHdrFormat}})) {
   if (!scene.sky.image.empty()) {
-    const SkyImage image = loadSkyImage(scene.sky.image);
+    const SkyImage image = loadSkyImage(scene.sky);
     image_ = uploadSkyImage(ctx, image);
     light_ = skyImageLight(image);
     ref_ = graph.image("sky", image_, vk::ImageLayout::eShaderReadOnlyOptimal);

@@ -32,6 +32,28 @@ SkyImage loadSkyImage(const std::string& path) {
   return sky;
 }
 
+SkyImage loadSkyImage(const scene::Sky& sky) {
+  return placeSkyImage(loadSkyImage(sky.image), sky.rotationDegrees, sky.intensity);
+}
+
+SkyImage placeSkyImage(const SkyImage& image, float degrees, float intensity) {
+  SkyImage placed{image.width, image.height, std::vector<glm::vec4>(image.texels.size())};
+  // Texel i of the placed image shows what texel i - shift showed (u = azimuth / 2 pi + 1/2).
+  const double shift = double(degrees) / 360.0 * image.width;
+  const double whole = std::floor(shift);
+  const float fraction = float(shift - whole);
+  const int64_t w = image.width;
+  for (uint32_t j = 0; j < image.height; ++j) {
+    const glm::vec4* row = &image.texels[size_t(j) * w];
+    for (int64_t i = 0; i < w; ++i) {
+      const int64_t from = (((i - int64_t(whole)) % w) + w) % w;
+      const glm::vec4 texel = glm::mix(row[from], row[(from - 1 + w) % w], fraction);
+      placed.texels[size_t(j) * w + i] = glm::vec4(glm::vec3(texel) * intensity, 1.0f);
+    }
+  }
+  return placed;
+}
+
 SkyLight skyImageLight(const SkyImage& image) {
   return SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), projectSh9(image, 0.5f * glm::pi<float>())};
 }

@@ -17,6 +17,16 @@ struct SkyImage {
 // Throws one line naming the file: unreadable, fewer than 3 channels, or non-finite texels.
 SkyImage loadSkyImage(const std::string& path);
 
+// The scene's image sky as it lights the scene: sky.image turned by
+// sky.rotation and scaled by sky.intensity (placeSkyImage).
+SkyImage loadSkyImage(const scene::Sky& sky);
+
+// `image` turned by `degrees` about +y, from +x towards +z as sky.sun_azimuth
+// turns (what was at azimuth a is at a + degrees), and scaled by
+// `intensity`. A turn about the vertical shifts each row along u: exact for
+// a whole number of texels, linear between two texels otherwise.
+SkyImage placeSkyImage(const SkyImage& image, float degrees, float intensity);
+
 // The light of a frame under the image: its radiance above the horizon in
 // SH9 (render/env_sh.hpp, exact for the texels), no sun.
 SkyLight skyImageLight(const SkyImage& image);

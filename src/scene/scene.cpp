@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "base/number_text.hpp"
+
 namespace tp::scene {
 namespace {
 
@@ -24,8 +26,8 @@ void requireNonNegative(const glm::vec3& v, const char* field) {
 
 void requireRange(float value, float lo, float hi, const char* field) {
   if (!(value >= lo && value <= hi)) {
-    throw std::runtime_error(std::string(field) + " = " + std::to_string(value) + " is outside [" + std::to_string(lo) +
-                             ", " + std::to_string(hi) + "]");
+    throw std::runtime_error(std::string(field) + " = " + base::numberText(value) + " is outside [" +
+                             base::numberText(lo) + ", " + base::numberText(hi) + "]");
   }
 }
 
@@ -69,6 +71,7 @@ Scene defaultScene() { return Scene{}; }
 Scene sceneAt(const Scene& scene, float t) {
   Scene placed = scene;
   for (Sphere& sphere : placed.spheres) sphere.center = sphereCenterAt(sphere, t);
+  placed.camera = cameraAt(scene.camera, t);
   return placed;
 }
 
@@ -101,6 +104,13 @@ void validateSky(const Scene& s) {
   requireRange(s.sky.glowExponent, 1.0f, 1e5f, "sky.glow_exponent");
   requireRange(s.sky.horizonBlend, 1e-4f, 1.0f, "sky.horizon_blend");
   requireRange(float(s.sky.textureWidth), 16.0f, 16384.0f, "sky.texture_width");
+  requireRange(s.sky.rotationDegrees, -360.0f, 360.0f, "sky.rotation");
+  requireRange(s.sky.intensity, 0.0f, 1e6f, "sky.intensity");
+  if (s.sky.image.empty() && (s.sky.rotationDegrees != 0.0f || s.sky.intensity != 1.0f)) {
+    throw std::runtime_error(
+        "sky.rotation and sky.intensity turn and scale an image sky (sky.image); the procedural sky turns with "
+        "sky.sun_azimuth and scales with its radiances");
+  }
   const Clouds& c = s.sky.clouds;
   requireRange(c.coverage, 0.0f, 1.0f, "sky.clouds.coverage");
   requireRange(c.scale, 1e-3f, 1e3f, "sky.clouds.scale");
@@ -165,8 +175,8 @@ void validatePool(const Scene& s) {
   requireRange(float(s.terrain.octaves), 1.0f, 16.0f, "terrain.octaves");
   requireRange(s.terrain.persistence, 0.0f, 1.0f, "terrain.persistence");
   if (w.enabled && w.level >= s.ground.height) {
-    throw std::runtime_error("water.level " + std::to_string(w.level) +
-                             " must be below the pool's rim, the ground at " + std::to_string(s.ground.height));
+    throw std::runtime_error("water.level " + base::numberText(w.level) +
+                             " must be below the pool's rim, the ground at " + base::numberText(s.ground.height));
   }
 }
 
@@ -181,7 +191,7 @@ void validateSpheres(const Scene& s) {
     requireNonNegative(sphere.albedo, "spheres[].albedo");
     requireOneOf(sphere.material, choices::kMaterial, "spheres[].material");
     if (!(sphere.ior > 1.0f && sphere.ior <= 3.0f)) {
-      throw std::runtime_error("spheres[].ior = " + std::to_string(sphere.ior) + " is outside (1, 3]");
+      throw std::runtime_error("spheres[].ior = " + base::numberText(sphere.ior) + " is outside (1, 3]");
     }
     requireRange(sphere.specular, 0.0f, 1.0f, "spheres[].specular");
     requireRange(sphere.roughness, 0.0f, 1.0f, "spheres[].roughness");

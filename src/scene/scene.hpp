@@ -55,6 +55,8 @@ struct Sky {
   // An equirectangular .exr or .hdr to use instead of the procedural sky
   // (absolute, or relative to the scene file); it lights the scene alone.
   std::string image;
+  float rotationDegrees = 0.0f;  // of the image, about +y, from +x towards +z (as sun_azimuth)
+  float intensity = 1.0f;        // the image's radiance scaled by this
   Clouds clouds;
   bool operator==(const Sky&) const = default;
 };

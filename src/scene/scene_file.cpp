@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/atomic_file.hpp"
+#include "base/closest_word.hpp"
 #include "base/text_file.hpp"
 #include "scene/scene_keys.hpp"
 
@@ -281,6 +282,42 @@ std::string sceneToJson(const Scene& scene) {
   return top.result().dump(2) + "\n";
 }
 
+namespace {
+
+// Names what `key` may have meant: the nearest key beside it in the scene
+// (water.grdi: water.grid), else the keys of the object it is under.
+std::string unknownKeyMessage(const json& root, const std::string& key) {
+  const json* parent = &root;
+  std::string parentName, last = key;
+  size_t start = 0;
+  for (size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
+    const std::string part = key.substr(start, dot - start);
+    const json* child = nullptr;
+    if (parent->is_object() && parent->contains(part)) child = &(*parent)[part];
+    if (parent->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+        std::stoul(part) < parent->size()) {
+      child = &(*parent)[std::stoul(part)];
+    }
+    if (!child) break;
+    parent = child;
+    parentName = key.substr(0, dot + 1);
+    start = dot + 1;
+    last = key.substr(start);
+  }
+  std::string message = key + ": not a key of the scene";
+  if (!parent->is_object())
+    return message + " (keys are a scene file's, joined by dots: water.wave_speed, spheres.0.radius)";
+  std::vector<std::string> names;
+  for (const auto& item : parent->items()) names.push_back(item.key());
+  const std::string head = last.substr(0, last.find('.'));
+  if (auto guess = base::closestWord(head, names)) {
+    return message + "; did you mean " + parentName + *guess + last.substr(head.size()) + "?";
+  }
+  return message + (parentName.empty() ? "; its objects are " : "; " + parentName + " has ") + base::listWords(names);
+}
+
+}  // namespace
+
 Scene withSetting(const Scene& scene, const std::string& key, const std::string& value) {
   json root = json::parse(sceneToJson(scene));
   std::string pointer = "/" + key;
@@ -301,11 +338,7 @@ Scene withSetting(const Scene& scene, const std::string& key, const std::string&
     } catch (const json::exception&) {
       throw std::runtime_error(key + ": not a key of the scene");
     }
-    if (key.empty() || !root.contains(at)) {
-      throw std::runtime_error(key +
-                               ": not a key of the scene (keys are a scene file's, joined by dots: "
-                               "water.wave_speed, spheres.0.radius)");
-    }
+    if (key.empty() || !root.contains(at)) throw std::runtime_error(unknownKeyMessage(root, key));
     root[at] = setting;
   }
   return parseScene(root.dump(), "setting " + key);

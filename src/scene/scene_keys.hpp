@@ -19,6 +19,14 @@ void visitCameraKeys(R& r, Camera& x) {
   r.number("fov", x.fovYDegrees);
   r.number("near", x.nearPlane);
   r.number("far", x.farPlane);
+  r.objects("path", x.path, [](auto& k, CameraKeyframe& key) {
+    k.number("time", key.time);
+    k.vec3("position", key.position);
+    k.vec3("target", key.target);
+    k.number("fov", key.fovYDegrees);
+  });
+  r.choice("interpolation", x.interpolation, kCameraInterpolation);
+  r.number("turntable", x.turntableSeconds);
 }
 
 template <typename R>
@@ -36,6 +44,8 @@ void visitSkyKeys(R& r, Sky& x) {
   r.number("horizon_blend", x.horizonBlend);
   r.count("texture_width", x.textureWidth);
   r.text("image", x.image);
+  r.number("rotation", x.rotationDegrees);
+  r.number("intensity", x.intensity);
   r.object("clouds", [&](auto& c) {
     c.number("coverage", x.clouds.coverage);
     c.number("scale", x.clouds.scale);

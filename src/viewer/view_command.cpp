@@ -8,7 +8,10 @@
 
 #include "base/atomic_file.hpp"
 #include "base/data_dir.hpp"
+#include "cli/frame_size.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/number_checks.hpp"
+#include "cli/usage_error.hpp"
 #include "cli/whole_number.hpp"
 #include "scene/scene_file.hpp"
 #include "viewer/view_loop.hpp"
@@ -18,18 +21,14 @@ namespace {
 
 // "WxH", each side 1..kMaxFrameSide, or nothing.
 std::optional<std::pair<uint32_t, uint32_t>> parseSize(std::string_view text) {
-  const size_t x = text.find('x');
-  if (x == std::string_view::npos) return std::nullopt;
-  const auto w = wholeNumber<uint32_t>(text.substr(0, x)), h = wholeNumber<uint32_t>(text.substr(x + 1));
-  if (!w || !h || *w == 0 || *h == 0 || *w > kMaxFrameSide || *h > kMaxFrameSide) return std::nullopt;
-  return std::pair{*w, *h};
+  const auto size = parseFrameSize(text, 1, kMaxFrameSide);
+  if (!size) return std::nullopt;
+  return std::pair{size->width, size->height};
 }
 
-std::runtime_error badValue(const char* option, const std::string& value, const char* expected) {
-  return std::runtime_error(std::string(option) + " " + value + ": expected " + expected);
+UsageError badValue(const char* option, const std::string& value, const char* expected) {
+  return UsageError(std::string(option) + " " + value + ": expected " + expected);
 }
-
-constexpr const char* kSizeForm = "WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720";
 
 ScriptedDrop scriptedDrop(const std::string& text) {
   constexpr const char* form = "FRAME:X,Z,RADIUS,AMP, e.g. 30:0.5,-0.3,0.25,0.04 (a positive radius)";
@@ -90,7 +89,7 @@ ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_
   const std::string_view action = rest.substr(0, argsAt);
   const std::optional<std::string_view> args =
       argsAt == std::string_view::npos ? std::nullopt : std::optional(rest.substr(argsAt + 1));
-  auto fail = [&](const std::string& why) { return std::runtime_error("--script " + text + ": " + why); };
+  auto fail = [&](const std::string& why) { return UsageError("--script " + text + ": " + why); };
   // The action's arguments: exactly `count` numbers (none: no ":ARGS").
   auto values = [&](size_t count, const char* form) {
     if (count == 0) {
@@ -151,8 +150,8 @@ ScriptedCommand scriptedCommand(const std::string& text, uint32_t width, uint32_
 
 void requireBeforeEnd(const char* option, uint32_t frame, uint32_t frames) {
   if (frames > 0 && frame >= frames) {
-    throw std::runtime_error(std::string(option) + " at frame " + std::to_string(frame) + " is past the last frame (" +
-                             std::to_string(frames - 1) + " with --frames " + std::to_string(frames) + ")");
+    throw UsageError(std::string(option) + " at frame " + std::to_string(frame) + " is past the last frame (" +
+                     std::to_string(frames - 1) + " with --frames " + std::to_string(frames) + ")");
   }
 }
 
@@ -188,12 +187,13 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
                   "Frame size WxH, and the window's first size; the frame keeps this size and is scaled to the "
                   "window, its aspect kept")
       ->type_name("WxH")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(frameSizeCheck(1, kMaxFrameSide));
   auto* frames =
       cmd->add_option("--frames", o.frames,
                       "Show N frames, then exit: frame numbers 0 to N-1 unless paused (the mouse and keys still work)")
           ->type_name("N")
-          ->check(CLI::Range(1u, 1000000u));
+          ->check(inRange(1u, 1000000u));
   cmd->add_option("--screenshot", o.screenshot,
                   "With --frames: save the last frame shown here, as `render` writes it (.exr: float linear RGBA; "
                   ".png: the 8-bit sRGB frame shown); written via a temporary file")
@@ -236,7 +236,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
                   "slower than F per second, back up when they come fast enough; the frame shown is scaled to the "
                   "window, and the panel and the summary give the size rendered")
       ->type_name("F")
-      ->check(CLI::Range(1.0, 1000.0));
+      ->check(inRange(1.0, 1000.0));
   cmd->add_flag("--profile", o.profile,
                 "At the end, print the last frame rendered's passes as `render --profile` does (GPU ms, dispatches, "
                 "draws, workgroups; no wall ms: the frames are submitted whole)");
@@ -246,8 +246,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
 
 int runView(const ViewOptions& o) {
   // Every input is checked before the window opens: a mistake costs nothing and leaves nothing.
-  const auto frameSize = parseSize(o.size);
-  if (!frameSize) throw badValue("--size", o.size, kSizeForm);
+  const auto frameSize = parseSize(o.size);  // checked by the parser (frameSizeCheck)
   ViewConfig config;
   config.width = frameSize->first;
   config.height = frameSize->second;
@@ -255,7 +254,7 @@ int runView(const ViewOptions& o) {
   if (o.frames > 0) config.frames = o.frames;
   if (!o.screenshot.empty()) {
     if (!base::hasExtension(o.screenshot, ".exr") && !base::hasExtension(o.screenshot, ".png")) {
-      throw std::runtime_error("screenshot " + o.screenshot + " must end in .exr or .png");
+      throw UsageError("screenshot " + o.screenshot + " must end in .exr or .png");
     }
     base::checkWritable(o.screenshot);
     config.screenshot = o.screenshot;
@@ -278,10 +277,12 @@ int runView(const ViewOptions& o) {
                    [](const auto& a, const auto& b) { return a.first.frame < b.first.frame; });
   bool grabbed = false, drops = false, saves = false;
   config.scene = loadScene(o.scene);
+  // A moving camera starts where its path or turntable starts; the mouse moves it from there.
+  config.scene.camera = scene::cameraAt(config.scene.camera, 0.0f);
   for (const auto& [scripted, text] : script) {
     const ViewCommand& c = scripted.command;
     if ((std::holds_alternative<command::Drag>(c) || std::holds_alternative<command::Release>(c)) && !grabbed) {
-      throw std::runtime_error("--script " + *text + ": no grab comes before it");
+      throw UsageError("--script " + *text + ": no grab comes before it");
     }
     grabbed = (grabbed || std::holds_alternative<command::Grab>(c)) && !std::holds_alternative<command::Release>(c);
     drops |= std::holds_alternative<command::Drop>(c);
@@ -292,7 +293,7 @@ int runView(const ViewOptions& o) {
       try {
         (void)scene::withSetting(config.scene, set->key, set->value);
       } catch (const std::exception& e) {
-        throw std::runtime_error("--script " + *text + ": " + e.what());
+        throw UsageError("--script " + *text + ": " + e.what());
       }
     }
     config.script.push_back(scripted);
@@ -304,15 +305,15 @@ int runView(const ViewOptions& o) {
   }
   // The default may be gone (a moved build): then only the reload key says so.
   if (!o.shaderDir.empty() && !std::filesystem::is_directory(o.shaderDir)) {
-    throw std::runtime_error("--shader-dir " + o.shaderDir + ": not a folder");
+    throw UsageError("--shader-dir " + o.shaderDir + ": not a folder");
   }
   config.shaderDir = o.shaderDir.empty() ? base::dataDir("shaders_glsl", TIDEPOOL_SHADERS_DIR).string() : o.shaderDir;
   config.panel = !o.noPanel;
   if (o.targetFps > 0.0) config.targetFps = o.targetFps;
   config.profile = o.profile;
   if (!config.scene.water.enabled && (!config.drops.empty() || drops)) {
-    throw std::runtime_error(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +
-                             " needs a scene with water (this one has water.enabled false)");
+    throw UsageError(std::string(config.drops.empty() ? "--script drop" : "--script-drop") +
+                     " needs a scene with water (this one has water.enabled false)");
   }
   config.validate = o.validate;
   config.device = o.device;

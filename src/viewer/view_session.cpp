@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "base/atomic_file.hpp"
+#include "cli/build_version.hpp"
 #include "gpu/spirv_library.hpp"
 #include "io/image_io.hpp"
 #include "scene/scene_file.hpp"
@@ -15,9 +16,12 @@ namespace tp::app {
 void saveFrame(const std::string& path, const render::RenderedFrame& frame) {
   if (base::hasExtension(path, ".exr")) {
     io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, frame.rgba};
-    io::writeExr(
-        path, image, std::vector<io::PixelType>(4, io::PixelType::Float),
-        io::ExrAttributes{.hasCamera = true, .worldToCamera = frame.worldToCamera, .worldToNDC = frame.worldToNDC});
+    io::writeExr(path, image, std::vector<io::PixelType>(4, io::PixelType::Float),
+                 io::ExrAttributes{.hasCamera = true,
+                                   .worldToCamera = frame.worldToCamera,
+                                   .worldToNDC = frame.worldToNDC,
+                                   .linearRec709 = true,
+                                   .software = versionText()});
   } else {
     io::writePng(path, frame.width, frame.height, frame.srgb);
   }
