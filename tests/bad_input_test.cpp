@@ -71,10 +71,12 @@ TEST(BadInput, BrokenSkyImages) {
 // image nor its temporary file is left.
 TEST(BadInput, FullDiskLeavesNoFile) {
   ScratchDir dir;
-  const std::string limit = fileSizeLimit(16);  // the frames below take 70 KB and more
-  for (const std::string& args : {"render --width 256 --height 144 --out " + dir.file("x.exr"),
-                                  "render --width 256 --height 144 --frames 0-2 --out " + dir.file("f.####.exr"),
-                                  "sim --grid 256 --steps 2 --out " + dir.file("s.exr")}) {
+  const std::string limit = fileSizeLimit(16);  // the frames and meshes below take 70 KB and more
+  for (const std::string& args :
+       {"render --width 256 --height 144 --out " + dir.file("x.exr"),
+        "render --width 256 --height 144 --frames 0-2 --out " + dir.file("f.####.exr"),
+        "sim --grid 256 --steps 2 --out " + dir.file("s.exr"), "export --out " + dir.file("m.obj"),
+        "export --out " + dir.file("m.ply"), "export --frames 0-1 --out " + dir.file("m.####.glb")}) {
     const std::string line = expectCleanFailure(args, dir, {}, limit);
     EXPECT_NE(line.find("cannot write"), std::string::npos) << args << "\n" << line;
   }

@@ -90,7 +90,8 @@ TEST(CommandLine, OutputsTakeTheirFormatFromTheExtension) {
       {"render --out a.png --out b.png", "--out b.png: a second output of its format"},
       {"render --out a.png --aov Z", "--aov: the AOVs are EXR channels"},
       {"render --png a.jpg", "--png a.jpg: the path must end in .png"},
-      {"export --out mesh.stl", "--out mesh.stl: the format comes from the extension, which must be .obj or .ply"},
+      {"export --out mesh.stl",
+       "--out mesh.stl: the format comes from the extension, which must be .obj, .ply or .glb"},
   });
 
   // Run in the scratch folder, where the default render.exr goes.

@@ -45,6 +45,12 @@ ObjContents readObj(const std::string& path) {
   return c;
 }
 
+// The exported water has a ring of vertices on the walls around the cells:
+// cell (i, j)'s vertex is (i + 1, j + 1) of the (n + 2)^2 grid.
+size_t waterVertex(uint32_t n, uint32_t i, uint32_t j) { return size_t(j + 1) * (n + 2) + i + 1; }
+size_t waterVertices(uint32_t n) { return size_t(n + 2) * (n + 2); }
+size_t waterTriangles(uint32_t n) { return 2 * size_t(n + 1) * (n + 1); }
+
 }  // namespace
 
 TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
@@ -60,25 +66,28 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
   const size_t floorVertices = size_t(render::kPoolFloorGrid) * render::kPoolFloorGrid;
   const size_t sphereVertices = size_t(render::kSphereStacks + 1) * (render::kSphereSlices + 1);
   const size_t first = 16 + 16 + floorVertices + sphereVertices;  // the water's first vertex
-  ASSERT_EQ(c.vertices.size(), first + size_t(n) * n);
+  ASSERT_EQ(c.vertices.size(), first + waterVertices(n));
   EXPECT_EQ(c.faces, 8u + 8u + 2u * size_t(render::kPoolFloorGrid - 1) * (render::kPoolFloorGrid - 1) +
-                         2u * render::kSphereStacks * render::kSphereSlices + 2u * size_t(n - 1) * (n - 1));
+                         2u * render::kSphereStacks * render::kSphereSlices + waterTriangles(n));
 
   // The water's heights against the double-precision reference run for the
   // same frames (float32 round-off over a few steps).
   sim::ReferenceSim reference(sim::waterParams(s), sim::waterInitialState(s.water));
   reference.steps(uint64_t(kFrame) * sim::waterSubsteps(s.water), sim::waterStep(s.water));
   double worst = 0.0, moved = 0.0;
-  for (size_t k = 0; k < size_t(n) * n; ++k) {
-    worst = std::max(worst, std::abs(double(c.vertices[first + k].y) - (s.water.level + reference.u()[k])));
-    moved = std::max(moved, std::abs(double(c.vertices[first + k].y) - s.water.level));
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      const double y = c.vertices[first + waterVertex(n, i, j)].y;
+      worst = std::max(worst, std::abs(y - (s.water.level + reference.u()[size_t(j) * n + i])));
+      moved = std::max(moved, std::abs(y - s.water.level));
+    }
   }
   EXPECT_LT(worst, 1e-6);
   EXPECT_GT(moved, 0.01);  // the drops are there
   // Cell (i, j) sits at world ((i + 1/2) h - L/2, (j + 1/2) h - L/2).
   const float h = s.water.extent / float(n);
-  EXPECT_FLOAT_EQ(c.vertices[first + n + 2].x, 2.5f * h - 0.5f * s.water.extent);
-  EXPECT_FLOAT_EQ(c.vertices[first + n + 2].z, 1.5f * h - 0.5f * s.water.extent);
+  EXPECT_FLOAT_EQ(c.vertices[first + waterVertex(n, 2, 1)].x, 2.5f * h - 0.5f * s.water.extent);
+  EXPECT_FLOAT_EQ(c.vertices[first + waterVertex(n, 2, 1)].z, 1.5f * h - 0.5f * s.water.extent);
   // The floor follows the terrain: heights spread over most of its amplitude around the mean depth.
   float low = 1e9f, high = -1e9f;
   for (size_t k = 32; k < 32 + floorVertices; ++k) {
@@ -99,8 +108,8 @@ TEST(ExportCli, PlyHasAConsistentHeader) {
   const uint32_t n = scene::defaultScene().water.grid, f = render::kPoolFloorGrid;
   const uint32_t sphereVertices = (render::kSphereStacks + 1) * (render::kSphereSlices + 1);
   const uint32_t sphereFaces = 2 * render::kSphereStacks * render::kSphereSlices;
-  const uint32_t vertices = 32 + f * f + sphereVertices + n * n;
-  const uint32_t faces = 16 + 2 * (f - 1) * (f - 1) + sphereFaces + 2 * (n - 1) * (n - 1);
+  const size_t vertices = 32 + f * f + sphereVertices + waterVertices(n);
+  const size_t faces = 16 + 2 * (f - 1) * (f - 1) + sphereFaces + waterTriangles(n);
   EXPECT_NE(text.find("element vertex " + std::to_string(vertices) + "\n"), std::string::npos);
   EXPECT_NE(text.find("element face " + std::to_string(faces) + "\n"), std::string::npos);
   const size_t body = text.find("end_header\n") + 11;
@@ -111,7 +120,7 @@ TEST(ExportCli, BadOutputsFailCleanly) {
   ScratchDir dir;
   writeText(dir.file("broken.json"), "{\"water\": {\"grid\": \"many\"}}");
   const std::vector<std::string> files{"broken.json"};
-  EXPECT_NE(expectCleanFailure("export --out " + dir.file("scene.stl"), dir, files).find(".obj or .ply"),
+  EXPECT_NE(expectUsageError("export --out " + dir.file("scene.stl"), dir, files).find(".obj, .ply or .glb"),
             std::string::npos);
   expectCleanFailure("export --out /nonexistent-dir/scene.obj", dir, files);
   expectCleanFailure("export", dir, files);
@@ -143,7 +152,7 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   const size_t floorVertices = size_t(render::kPoolFloorGrid) * render::kPoolFloorGrid;
   const size_t sphereVertices = size_t(render::kSphereStacks + 1) * (render::kSphereSlices + 1);
   const size_t sphereFirst = 32 + floorVertices, first = sphereFirst + sphereVertices;
-  ASSERT_EQ(c.vertices.size(), first + size_t(n) * n);
+  ASSERT_EQ(c.vertices.size(), first + waterVertices(n));
   for (size_t k = sphereFirst; k < first; ++k) {
     ASSERT_NEAR(glm::length(c.vertices[k] - center), s.spheres[0].radius, 1e-5f);
   }
@@ -154,10 +163,50 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   double waterChange = 0.0;
   for (uint32_t j = 0; j < n; ++j) {
     for (uint32_t i = 0; i < n; ++i)
-      waterChange += (double(c.vertices[first + size_t(j) * n + i].y) - s.water.level) * h * h;
+      waterChange += (double(c.vertices[first + waterVertex(n, i, j)].y) - s.water.level) * h * h;
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
   EXPECT_NEAR(waterChange, submerged, 1e-3 * submerged);
+}
+
+// A sequence runs the water once through the range: each frame as a single
+// export of it writes it, the water moving between frames.
+TEST(ExportCli, FramesWriteAMeshSequence) {
+  ScratchDir dir;
+  ProcessResult r = runTidepool("export --validate --frames 0-2 --out " + dir.file("pool.####.obj"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const size_t water = waterVertices(scene::defaultScene().water.grid);
+  std::vector<std::vector<glm::vec3>> heights;
+  for (const char* frame : {"0000", "0001", "0002"}) {
+    const std::string obj = dir.file(std::string("pool.") + frame + ".obj");
+    ASSERT_TRUE(std::filesystem::is_regular_file(dir.file(std::string("pool.") + frame + ".mtl"))) << frame;
+    const ObjContents c = readObj(obj);
+    ASSERT_GE(c.vertices.size(), water) << frame;
+    heights.emplace_back(c.vertices.end() - std::ptrdiff_t(water), c.vertices.end());  // the water is last
+    EXPECT_NE(r.out.find(obj), std::string::npos) << "a line of progress per frame:\n" << r.out;
+  }
+  for (size_t f = 1; f < heights.size(); ++f) {
+    float change = 0.0f;
+    for (size_t k = 0; k < water; ++k) change = std::max(change, std::abs(heights[f][k].y - heights[f - 1][k].y));
+    EXPECT_GT(change, 1e-4f) << "frame " << f;
+  }
+  std::filesystem::create_directory(dir.file("single"));
+  const std::string single = dir.file("single/pool.0002.obj");
+  ASSERT_EQ(runTidepool("export --frame 2 --out " + single, dir).exitCode, 0);
+  // Compared whole but not printed: gtest's diff of two 6 MB texts would not end.
+  EXPECT_TRUE(readText(single) == readText(dir.file("pool.0002.obj"))) << "frame 2 of the sequence differs";
+}
+
+TEST(ExportCli, BadSequencesAreRefused) {
+  ScratchDir dir;
+  const std::string pattern = dir.file("pool.####.obj");
+  EXPECT_NE(expectUsageError("export --frames 2-1 --out " + pattern, dir).find("--frames 2-1"), std::string::npos);
+  EXPECT_NE(expectUsageError("export --frames x --out " + pattern, dir).find("--frames"), std::string::npos);
+  EXPECT_NE(expectUsageError("export --frames 0-2 --out " + dir.file("pool.obj"), dir).find("####"), std::string::npos);
+  expectUsageError("export --frame 1 --frames 0-2 --out " + pattern, dir);
+  EXPECT_NE(expectUsageError("export --frames 0-2 --out " + dir.file("pool.####.fbx"), dir).find(".ply"),
+            std::string::npos);
+  expectCleanFailure("export --frames 0-2 --out /nonexistent-dir/pool.####.obj", dir, {});
 }
 
 }  // namespace tp::test

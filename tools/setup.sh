@@ -14,6 +14,8 @@ packages=(
   parallel  # the recipe in docs/rendering.md for a shot on one machine (tools/farm/parallel-shot.sh), tested
   clang libclang-rt-14-dev  # the sanitized CPU build and its libFuzzer targets (build-fuzz/)
   clang-format  # the house style, checked by the test `format`
+  libtinygltf-dev  # glTF export: Debian builds tinygltf as a shared library (its images unused)
+  libassimp-dev  # an independent reader of the exported OBJ and glTF, linked only by the tests
 )
 
 missing=()

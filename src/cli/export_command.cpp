@@ -4,33 +4,85 @@
 #include <limits>
 #include <optional>
 
-#include "base/atomic_file.hpp"
+#include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/sequence_progress.hpp"
 #include "cli/usage_error.hpp"
 #include "io/mesh_io.hpp"
 #include "scene/scene_file.hpp"
-#include "shading/water_model.hpp"
+#include "shading/shaded_meshes.hpp"
+#include "sim/water_scene.hpp"
 
 namespace tp::app {
+namespace {
+
+// Writes one frame's meshes; returns its triangles.
+size_t writeFrame(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const std::string& path) {
+  const auto meshes = render::shadedSceneMeshes(scene, water, float(frame) * scene.water.frameTime);
+  io::writeMeshes(path, meshes);
+  size_t triangles = 0;
+  for (const auto& m : meshes) triangles += m.mesh.indices.size() / 3;
+  return triangles;
+}
+
+int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange range) {
+  SequenceProgress progress(range.count(), range.count());
+  const auto write = [&](uint32_t frame, const sim::WaterState* water) {
+    const std::string path = framePath(o.out, frame);
+    writeFrame(scene, water, frame, path);
+    progress.rendered(frame, path);
+  };
+  int exitCode = 0;
+  if (scene.water.enabled) {
+    // One run of the water through the range, each frame written as it is reached.
+    GpuSession session(o.validate, o.device);
+    sim::simulateWaterFrames(session.context(), scene, range.first, range.last,
+                             [&](uint32_t frame, const sim::WaterState& water) { write(frame, &water); });
+    exitCode = session.finish();
+  } else {
+    for (uint32_t frame = range.first;; ++frame) {
+      write(frame, nullptr);
+      if (frame == range.last) break;
+    }
+  }
+  progress.finish();
+  std::printf("wrote frames %u-%u to %s\n", range.first, range.last, o.out.c_str());
+  return exitCode;
+}
+
+}  // namespace
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
-  CLI::App* cmd = app.add_subcommand("export", "Write the scene's triangles (water included) at a frame as OBJ or PLY");
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF");
   addSceneSourceOptions(cmd, o.scene, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene");
-  cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
-      ->capture_default_str()
-      ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
-  cmd->add_option("--out", o.out, "Output .obj or .ply")->type_name("PATH")->required();
+  CLI::Option* frame = cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
+                           ->capture_default_str()
+                           ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
+  cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
+      ->type_name("A-B")
+      ->excludes(frame);
+  cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it), .ply or .glb")->type_name("PATH")->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
 
 int runExport(const ExportOptions& o) {
-  if (!base::hasExtension(o.out, ".obj") && !base::hasExtension(o.out, ".ply")) {
-    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj or .ply");
+  std::optional<FrameRange> range;
+  if (!o.frames.empty()) {
+    range = parseFrameRange(o.frames);
+    if (!hasFrameField(o.out)) {
+      throw UsageError("--out " + o.out +
+                       ": with --frames the path needs #### where the frame number goes, e.g. meshes/pool.####.obj");
+    }
   }
-  io::checkMeshOutput(o.out);
+  if (!io::isMeshOutput(o.out)) {
+    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj, .ply or .glb");
+  }
+  io::checkMeshOutput(range ? framePath(o.out, range->first) : o.out);
   const scene::Scene scene = loadScene(o.scene, scene::defaultScene());
+  if (range) return exportSequence(o, scene, *range);
   std::optional<sim::WaterState> water;
   int exitCode = 0;
   if (scene.water.enabled) {
@@ -39,11 +91,8 @@ int runExport(const ExportOptions& o) {
     water = sim::simulateWater(session.context(), scene, o.frame);
     exitCode = session.finish();
   }
-  const auto meshes = render::sceneMeshes(scene, water ? &*water : nullptr, float(o.frame) * scene.water.frameTime);
-  io::writeMeshes(o.out, meshes);
-  size_t triangles = 0;
-  for (const auto& m : meshes) triangles += m.indices.size() / 3;
-  std::printf("wrote %s (%zu meshes, %zu triangles, frame %u)\n", o.out.c_str(), meshes.size(), triangles, o.frame);
+  const size_t triangles = writeFrame(scene, water ? &*water : nullptr, o.frame, o.out);
+  std::printf("wrote %s (%zu triangles, frame %u)\n", o.out.c_str(), triangles, o.frame);
   return exitCode;
 }
 

@@ -43,14 +43,27 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
 }
 
 WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
+  WaterState result;
+  simulateWaterFrames(ctx, scene, frame, frame, [&](uint32_t, const WaterState& water) { result = water; });
+  return result;
+}
+
+void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uint32_t first, uint32_t last,
+                         const std::function<void(uint32_t frame, const WaterState& water)>& atFrame) {
   GpuStepper stepper(ctx, waterParams(scene), waterInitialState(scene.water), StepKernel::ActiveTiles);
   const WaterClock clock{.substeps = waterSubsteps(scene.water)};  // from the start
-  const uint64_t steps = clock.stepsAt(frame);
-  const std::vector<size_t> due = dueDrops(scene.water, clock, 0, steps, {});
-  gpu::submitAndWait(
-      ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterRun(cmd, stepper, scene, clock, 0, steps, due); },
-      "water simulation");
-  return stepper.download();
+  uint64_t done = 0;
+  for (uint32_t frame = first;; ++frame) {
+    // Each drop is due in exactly one of these disjoint runs of steps.
+    const uint64_t steps = clock.stepsAt(frame);
+    const std::vector<size_t> due = dueDrops(scene.water, clock, done, steps, {});
+    gpu::submitAndWait(
+        ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterRun(cmd, stepper, scene, clock, done, steps, due); },
+        "water simulation");
+    done = steps;
+    atFrame(frame, stepper.download());
+    if (frame == last) break;
+  }
 }
 
 glm::vec3 worldToGrid(const scene::Water& w, glm::vec3 p) {

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's water as the simulation sees it: its parameters, time step,
 // initial state and the moving spheres' forcing, in the grid's frame.
+#include <functional>
 #include <vector>
 
 #include "gpu/vulkan.hpp"
@@ -22,6 +23,11 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
 // renderer does it (its later drops each on its frame), downloaded (for
 // export and the CPU reference).
 WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame);
+// The same for each frame from `first` to `last` in turn, in one run from the
+// start: each frame's state is handed to `atFrame` as it is reached, so a
+// sequence costs the steps to its last frame once.
+void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uint32_t first, uint32_t last,
+                         const std::function<void(uint32_t frame, const WaterState& water)>& atFrame);
 
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
