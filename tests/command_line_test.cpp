@@ -91,7 +91,7 @@ TEST(CommandLine, OutputsTakeTheirFormatFromTheExtension) {
       {"render --out a.png --aov Z", "--aov: the AOVs are EXR channels"},
       {"render --png a.jpg", "--png a.jpg: the path must end in .png"},
       {"export --out mesh.stl",
-       "--out mesh.stl: the format comes from the extension, which must be .obj, .ply or .glb"},
+       "--out mesh.stl: the format comes from the extension, which must be .obj, .ply, .glb or .exr"},
   });
 
   // Run in the scratch folder, where the default render.exr goes.

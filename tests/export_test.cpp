@@ -120,7 +120,8 @@ TEST(ExportCli, BadOutputsFailCleanly) {
   ScratchDir dir;
   writeText(dir.file("broken.json"), "{\"water\": {\"grid\": \"many\"}}");
   const std::vector<std::string> files{"broken.json"};
-  EXPECT_NE(expectUsageError("export --out " + dir.file("scene.stl"), dir, files).find(".obj, .ply or .glb"),
+  EXPECT_NE(expectUsageError("export --out " + dir.file("scene.stl"), dir, files)
+                .find(".obj, .ply, .glb or .exr (a heightfield)"),
             std::string::npos);
   expectCleanFailure("export --out /nonexistent-dir/scene.obj", dir, files);
   expectCleanFailure("export", dir, files);

@@ -4,8 +4,10 @@
 #include <limits>
 #include <optional>
 
+#include "base/atomic_file.hpp"
 #include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
+#include "cli/heightfield_output.hpp"
 #include "cli/number_checks.hpp"
 #include "cli/sequence_progress.hpp"
 #include "cli/usage_error.hpp"
@@ -17,13 +19,19 @@
 namespace tp::app {
 namespace {
 
-// Writes one frame's meshes; returns its triangles.
-size_t writeFrame(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const std::string& path) {
+// Writes one frame: its meshes, or its water as a heightfield (.exr);
+// returns what was written, for the summary.
+std::string writeFrame(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame,
+                       const std::string& path) {
+  if (isHeightfieldOutput(path)) {
+    writeHeightfield(path, scene, *water, frame);
+    return std::to_string(water->n) + "x" + std::to_string(water->n) + " heightfield";
+  }
   const auto meshes = render::shadedSceneMeshes(scene, water, float(frame) * scene.water.frameTime);
   io::writeMeshes(path, meshes);
   size_t triangles = 0;
   for (const auto& m : meshes) triangles += m.mesh.indices.size() / 3;
-  return triangles;
+  return std::to_string(triangles) + " triangles";
 }
 
 int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange range) {
@@ -63,7 +71,11 @@ CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
       ->type_name("A-B")
       ->excludes(frame);
-  cmd->add_option("--out", o.out, "Output .obj (with its .mtl beside it), .ply or .glb")->type_name("PATH")->required();
+  cmd->add_option("--out", o.out,
+                  "Output .obj (with its .mtl beside it), .ply or .glb; or .exr: the water alone as a heightfield "
+                  "(world height Y and normal N per cell) to displace a grid with")
+      ->type_name("PATH")
+      ->required();
   addGpuOptions(cmd, o.validate, o.device);
   return cmd;
 }
@@ -77,11 +89,17 @@ int runExport(const ExportOptions& o) {
                        ": with --frames the path needs #### where the frame number goes, e.g. meshes/pool.####.obj");
     }
   }
-  if (!io::isMeshOutput(o.out)) {
-    throw UsageError("--out " + o.out + ": the format comes from the extension, which must be .obj, .ply or .glb");
+  const bool heightfield = isHeightfieldOutput(o.out);
+  if (!io::isMeshOutput(o.out) && !heightfield) {
+    throw UsageError("--out " + o.out +
+                     ": the format comes from the extension, which must be .obj, .ply, .glb or .exr (a heightfield)");
   }
-  io::checkMeshOutput(range ? framePath(o.out, range->first) : o.out);
+  const std::string first = range ? framePath(o.out, range->first) : o.out;
+  heightfield ? base::checkWritable(first) : io::checkMeshOutput(first);
   const scene::Scene scene = loadScene(o.scene, scene::defaultScene());
+  if (heightfield && !scene.water.enabled) {
+    throw UsageError("--out " + o.out + ": a heightfield is the water's, and this scene has water.enabled false");
+  }
   if (range) return exportSequence(o, scene, *range);
   std::optional<sim::WaterState> water;
   int exitCode = 0;
@@ -91,8 +109,8 @@ int runExport(const ExportOptions& o) {
     water = sim::simulateWater(session.context(), scene, o.frame);
     exitCode = session.finish();
   }
-  const size_t triangles = writeFrame(scene, water ? &*water : nullptr, o.frame, o.out);
-  std::printf("wrote %s (%zu triangles, frame %u)\n", o.out.c_str(), triangles, o.frame);
+  const std::string written = writeFrame(scene, water ? &*water : nullptr, o.frame, o.out);
+  std::printf("wrote %s (%s, frame %u)\n", o.out.c_str(), written.c_str(), o.frame);
   return exitCode;
 }
 

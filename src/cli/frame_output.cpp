@@ -61,6 +61,10 @@ RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
   return {{.aovs = geometry, .skipping = !o.noSkip}, {.hdr = true, .ldr = !o.png.empty(), .aovs = geometry, .ao = ao}};
 }
 
+base::Rational sceneFrameRate(const scene::Scene& scene) {
+  return base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator);
+}
+
 void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
                 uint32_t frameNumber, const std::string& exr, const std::string& png) {
   std::vector<float> aoRaw, aoRef;
@@ -72,15 +76,14 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
   io::FloatImage image = frameChannels(frame, channels, aoRaw, aoRef);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
-  const io::ExrAttributes attributes{
-      .hasCamera = true,
-      .worldToCamera = frame.worldToCamera,
-      .worldToNDC = frame.worldToNDC,
-      .linearRec709 = true,
-      .software = versionText(),
-      .frame = frameNumber,
-      .framesPerSecond = base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator),
-      .compression = o.compression};
+  const io::ExrAttributes attributes{.hasCamera = true,
+                                     .worldToCamera = frame.worldToCamera,
+                                     .worldToNDC = frame.worldToNDC,
+                                     .linearRec709 = true,
+                                     .software = versionText(),
+                                     .frame = frameNumber,
+                                     .framesPerSecond = sceneFrameRate(scene),
+                                     .compression = o.compression};
   if (!exr.empty()) io::writeExr(exr, image, types, attributes);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "base/rational.hpp"
 #include "cli/render_command.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -21,6 +22,10 @@ struct RasterPlan {
 // Throws one line when --aov asks for the AO channels and the SSAO passes do
 // not run (--reference, --no-ao, a scene with ao.enabled false).
 RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene);
+
+// A scene's frames per second, 1 / water.frame_time, as the rational video
+// rate an EXR's framesPerSecond holds (30/1, 30000/1001).
+base::Rational sceneFrameRate(const scene::Scene& scene);
 
 // Writes a rendered frame as `render` writes it: an EXR at `exr` unless it
 // is empty (RGBA, half unless --float, then the AOVs asked for as float

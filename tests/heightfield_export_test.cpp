@@ -1,0 +1,63 @@
+// `export --out PATH.exr`: the water as a heightfield, against the water the
+// simulation gives for that frame in this process and the normals the
+// renderer shades it with.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "gpu_test.hpp"
+#include "io/image_io.hpp"
+#include "process.hpp"
+#include "scene/scene.hpp"
+#include "shading/water_model.hpp"
+#include "sim/water_scene.hpp"
+
+namespace tp::test {
+
+class HeightfieldExport : public GpuTest {};
+
+TEST_F(HeightfieldExport, HoldsTheFramesWaterAndItsNormals) {
+  ScratchDir dir;
+  ProcessResult r = runTidepool("export --set water.grid=32 --frame 7 --validate --out " + dir.file("h.exr"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = runTidepool("export --set water.grid=32 --frames 6-7 --validate --out " + dir.file("s.#.exr"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  scene::Scene scene = scene::defaultScene();
+  scene.water.grid = 32;
+  const sim::WaterState water = sim::simulateWater(ctx(), scene, 7);
+  const std::vector<glm::vec3> normals = render::waterVertexNormals(water, scene.water.extent);
+  for (const char* name : {"h.exr", "s.7.exr"}) {
+    SCOPED_TRACE(name);
+    const io::FloatImage image = io::readImage(dir.file(name));
+    ASSERT_EQ(image.channels, (std::vector<std::string>{"Y", "N.X", "N.Y", "N.Z"}));
+    ASSERT_EQ(image.width, 32u);
+    ASSERT_EQ(image.height, 32u);
+    for (size_t k = 0; k < water.u.size(); ++k) {
+      ASSERT_EQ(image.pixels[4 * k], scene.water.level + water.u[k]) << "cell " << k;
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(image.pixels[4 * k + 1 + c], normals[k][c]) << "cell " << k;
+    }
+  }
+  // The frame and the rate are on each frame of the sequence.
+  auto in = OIIO::ImageInput::open(dir.file("s.6.exr"));
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_int_attribute("frame", -1), 6);
+  EXPECT_TRUE(in->spec().find_attribute("framesPerSecond", OIIO::TypeRational, true));
+  // Frame 6's water is not frame 7's: the sequence is stepped between its files.
+  const io::FloatImage six = io::readImage(dir.file("s.6.exr")), seven = io::readImage(dir.file("s.7.exr"));
+  double change = 0.0;
+  for (size_t k = 0; k < six.pixels.size(); k += 4) change += std::abs(six.pixels[k] - seven.pixels[k]);
+  EXPECT_GT(change, 0.0);
+}
+
+TEST(HeightfieldExportCli, RefusesAPoolWithoutWater) {
+  ScratchDir dir;
+  EXPECT_NE(expectUsageError("export --set water.enabled=false --out " + dir.file("h.exr"), dir)
+                .find("a heightfield is the water's"),
+            std::string::npos);
+  EXPECT_NE(expectUsageError("export --out " + dir.file("h.tif"), dir).find(".exr (a heightfield)"), std::string::npos);
+}
+
+}  // namespace tp::test
