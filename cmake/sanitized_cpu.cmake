@@ -43,7 +43,9 @@ file(COPY ${scene_seeds} DESTINATION ${CMAKE_BINARY_DIR}/corpus/scene_parser)
 # bytes whose header declares a 1.8 GB string attribute, which Debian 12's
 # OpenEXR allocates before it finds the file short (the reader then fails
 # cleanly). The limits below let that allocation through and would still
-# stop a run that keeps growing.
+# stop a run that keeps growing. wide-scanlines.exr is the second: a header
+# of 3,211,272 x 8 pixels, for which OpenImageIO asked 6.5 GB; readImage now
+# refuses sizes beyond its limits before reading.
 file(GLOB state_seeds ${CMAKE_SOURCE_DIR}/tests/fuzz/seeds/*.exr)
 file(COPY ${state_seeds} DESTINATION ${CMAKE_BINARY_DIR}/corpus/state_exr)
 foreach(target scene_parser state_exr)

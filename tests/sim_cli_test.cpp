@@ -103,6 +103,10 @@ TEST(SimCli, BadInitialStatesFailCleanly) {
   EXPECT_NE(expectCleanFailure("sim --grid 64 --init " + dir.file("small.exr") + out, dir, files).find("32x32"),
             std::string::npos);
   expectCleanFailure("sim --init " + dir.file("truncated.exr") + out, dir, files);
+  // The fuzzer's second finding: 592 bytes declaring 3,211,272 x 8 pixels, for
+  // which OpenImageIO asked 6.5 GB; refused before any memory is taken.
+  const std::string wide = std::string(TIDEPOOL_SOURCE_DIR) + "/tests/fuzz/seeds/wide-scanlines.exr";
+  EXPECT_NE(expectCleanFailure("sim --init " + wide + out, dir, files).find("over the limit"), std::string::npos);
   expectCleanFailure("sim --init " + dir.file("text.exr") + out, dir, files);
   EXPECT_NE(expectCleanFailure("sim --grid 64 --init drop:1,2" + out, dir, files).find("expected 4"),
             std::string::npos);

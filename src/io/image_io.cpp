@@ -100,6 +100,16 @@ FloatImage readImage(const std::string& path) {
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1) {
     throw std::runtime_error("cannot read " + path + ": not a 2D image");
   }
+  // A header may declare any size: refuse what no image of ours reaches
+  // before memory is taken for it (OpenImageIO buffers many rows of a wide
+  // image at once: a 3,211,272 x 8 file made it ask for 6.5 GB).
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+      uint64_t(spec.width) * spec.height * spec.nchannels * sizeof(float) > kMaxImageBytes) {
+    throw std::runtime_error("cannot read " + path + ": " + std::to_string(spec.width) + "x" +
+                             std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) +
+                             " channels is over the limit of " + std::to_string(kMaxImageSide) + " a side and " +
+                             std::to_string(kMaxImageBytes >> 20) + " MiB of floats");
+  }
   FloatImage image;
   image.width = uint32_t(spec.width);
   image.height = uint32_t(spec.height);

@@ -42,8 +42,15 @@ struct ExrAttributes {
 void writeExr(const std::string& path, const FloatImage& image, const std::vector<PixelType>& channelTypes,
               const ExrAttributes& attributes = {});
 
+// The largest image readImage takes: each side (the largest frame, sky
+// texture and water grid have 16384), and all its channels as floats (a
+// 16384 x 16384 water state of u and v).
+constexpr int kMaxImageSide = 16384;
+constexpr uint64_t kMaxImageBytes = uint64_t(16384) * 16384 * 2 * sizeof(float);
+
 // Reads every channel of an image OpenImageIO can read (EXR, HDR) as float.
-// Throws with the path and the reason on a missing, unreadable or truncated file.
+// Throws with the path and the reason on a missing, unreadable or truncated
+// file, or one whose header declares more than the limits above.
 FloatImage readImage(const std::string& path);
 
 // Writes an 8-bit RGBA PNG (already sRGB encoded), through a temporary file.
