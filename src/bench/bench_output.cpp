@@ -6,7 +6,6 @@
 
 #include "base/atomic_file.hpp"
 #include "bench/plot.hpp"
-#include "cli/frame_size.hpp"
 #include "cli/usage_error.hpp"
 
 namespace tp::app {
@@ -32,7 +31,7 @@ void commitBenchCsv(base::AtomicFile& file, std::ofstream& csv, const std::strin
 Resolution parseResolution(const std::string& text, const std::string& bench) {
   const auto size = parseFrameSize(text, kMinBenchSide, kMaxBenchSide);
   if (!size) throw UsageError(bench + ": --size " + text + " is not WxH with sides 8 to 4096");
-  return {size->width, size->height};
+  return *size;
 }
 
 std::string formatNumber(const char* format, double x) {

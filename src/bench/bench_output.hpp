@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/median.hpp"
+#include "cli/frame_size.hpp"
 
 namespace tp::base {
 class AtomicFile;
@@ -25,9 +26,7 @@ constexpr uint32_t kMinBenchSide = 8, kMaxBenchSide = 4096;
 
 // An image size given as WxH, each side kMinBenchSide to kMaxBenchSide;
 // `bench` names the benchmark in the error.
-struct Resolution {
-  uint32_t width = 0, height = 0;
-};
+using Resolution = FrameSize;
 Resolution parseResolution(const std::string& text, const std::string& bench);
 
 // The median of timed repeats (base::median).

@@ -43,30 +43,9 @@ std::vector<float> referenceAo(const scene::Scene& scene, const render::Rendered
                                            g.normal, frame.width, frame.height, options);
 }
 
-}  // namespace
-
-bool wants(const std::vector<std::string>& aovs, const char* name) {
-  return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
-}
-
-RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
-  const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
-  if (ao && (o.reference || !scene.ao.enabled)) {
-    throw UsageError(
-        "--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
-        "nor with a scene whose ao.enabled is false");
-  }
-  // A transparent sky needs to know where nothing is hit: the positions' pass.
-  const bool geometry = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P") || o.transparentSky;
-  return {{.aovs = geometry, .skipping = !o.noSkip}, {.hdr = true, .ldr = !o.png.empty(), .aovs = geometry, .ao = ao}};
-}
-
-base::Rational sceneFrameRate(const scene::Scene& scene) {
-  return base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator);
-}
-
-void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
-                uint32_t frameNumber, const std::string& exr, const std::string& png) {
+// The frame's EXR: RGBA, the AOVs asked for, the attributes (writeFrame).
+void writeFrameExr(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
+                   uint32_t frameNumber, const std::string& exr) {
   std::vector<float> aoRaw, aoRef;
   if (wants(o.aovs, "ao_raw"))
     aoRaw = toFrameSize(frame.aoRaw, frame.aoWidth, frame.aoHeight, frame.width, frame.height);
@@ -84,7 +63,36 @@ void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render:
                                      .frame = frameNumber,
                                      .framesPerSecond = sceneFrameRate(scene),
                                      .compression = o.compression};
-  if (!exr.empty()) io::writeExr(exr, image, types, attributes);
+  io::writeExr(exr, image, types, attributes);
+}
+
+}  // namespace
+
+bool wants(const std::vector<std::string>& aovs, const char* name) {
+  return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
+}
+
+RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
+  const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
+  if (ao && (o.reference || !scene.ao.enabled)) {
+    throw UsageError(
+        "--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
+        "nor with a scene whose ao.enabled is false");
+  }
+  // A transparent sky needs to know where nothing is hit: the positions' pass.
+  const bool geometry = wants(o.aovs, "Z") || wants(o.aovs, "N") || wants(o.aovs, "P") || o.transparentSky;
+  // The HDR frame is read back for the EXR only; a PNG is the tonemapped frame.
+  return {{.aovs = geometry, .skipping = !o.noSkip},
+          {.hdr = !o.exr.empty(), .ldr = !o.png.empty(), .aovs = geometry, .ao = ao}};
+}
+
+base::Rational sceneFrameRate(const scene::Scene& scene) {
+  return base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator);
+}
+
+void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,
+                uint32_t frameNumber, const std::string& exr, const std::string& png) {
+  if (!exr.empty()) writeFrameExr(o, scene, frame, frameNumber, exr);
   if (!png.empty()) io::writePng(png, frame.width, frame.height, frame.srgb);
 }
 

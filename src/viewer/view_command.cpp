@@ -19,13 +19,6 @@
 namespace tp::app {
 namespace {
 
-// "WxH", each side 1..kMaxFrameSide, or nothing.
-std::optional<std::pair<uint32_t, uint32_t>> parseSize(std::string_view text) {
-  const auto size = parseFrameSize(text, 1, kMaxFrameSide);
-  if (!size) return std::nullopt;
-  return std::pair{size->width, size->height};
-}
-
 UsageError badValue(const char* option, const std::string& value, const char* expected) {
   return UsageError(std::string(option) + " " + value + ": expected " + expected);
 }
@@ -54,9 +47,9 @@ ScriptedResize scriptedResize(const std::string& text) {
   const size_t colon = text.find(':');
   if (colon == std::string::npos) throw badValue("--script-resize", text, form);
   const auto frame = wholeNumber<uint32_t>(std::string_view(text).substr(0, colon));
-  const auto wh = parseSize(std::string_view(text).substr(colon + 1));
+  const auto wh = parseFrameSize(std::string_view(text).substr(colon + 1), 1, kMaxFrameSide);
   if (!frame || !wh) throw badValue("--script-resize", text, form);
-  return {*frame, wh->first, wh->second};
+  return {*frame, wh->width, wh->height};
 }
 
 constexpr const char* kScriptForm =
@@ -246,10 +239,10 @@ CLI::App* addViewCommand(CLI::App& app, ViewOptions& o) {
 
 int runView(const ViewOptions& o) {
   // Every input is checked before the window opens: a mistake costs nothing and leaves nothing.
-  const auto frameSize = parseSize(o.size);  // checked by the parser (frameSizeCheck)
+  const auto frameSize = parseFrameSize(o.size, 1, kMaxFrameSide);  // checked by the parser (frameSizeCheck)
   ViewConfig config;
-  config.width = frameSize->first;
-  config.height = frameSize->second;
+  config.width = frameSize->width;
+  config.height = frameSize->height;
   checkFramePixels(config.width, config.height);
   if (o.frames > 0) config.frames = o.frames;
   if (!o.screenshot.empty()) {
