@@ -12,7 +12,7 @@ layout(push_constant) uniform Push { GroundParams ground; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
-  const vec2 footprint = fwidth(worldPosition.xz);
+  const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
   color = vec4(groundRadiance(ground, frame, worldPosition.xz, footprint, n, 1.0), 1.0);
   writeGbuffer(frame, n, groundRadiance(ground, withoutSun(frame), worldPosition.xz, footprint, n, 1.0));
 }

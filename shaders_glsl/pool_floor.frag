@@ -15,7 +15,7 @@ layout(binding = 3) uniform Medium { CameraMedium medium; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
-  const vec2 footprint = fwidth(worldPosition.xz);
+  const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
   const float caustic = texture(caustics, causticsUv(pool, worldPosition.xz)).r;
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera, 1.0);

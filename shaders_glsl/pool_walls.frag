@@ -17,7 +17,7 @@ layout(binding = 4) uniform sampler2D glossyMap;
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n));
+  const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n)) * frame.sampling.x;
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera, 1.0);

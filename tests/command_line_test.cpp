@@ -68,6 +68,8 @@ TEST(CommandLine, BadValuesExitTwoInTheUsersWords) {
       {"render --frame -1", "--frame: -1 is outside 0 to 4294967295"},
       {"render --size 12x", "--size: 12x is not WxH with each side 1 to 16384"},
       {"render --size 10x10 --width 5", "--size 10x10: not with --width or --height"},
+      {"render --profile --samples 4", "--profile times the passes of one frame: not with --samples 4"},
+      {"render --samples 0", "--samples: 0 is outside 1 to 65536"},
       {"render --size 16384x16384", "over the limit"},
       {"render --frames 5-2", "--frames 5-2: expected A-B"},
       {"render --frames 0-1 --out x.exr", "--frames 0-1: the output x.exr needs ####"},

@@ -54,9 +54,11 @@ struct RayDifferential {
 };
 
 // Taken where every lane of the pixel quad runs the same code: derivatives
-// of values computed in divergent code (a cast's hit) are undefined.
+// of values computed in divergent code (a cast's hit) are undefined. Scaled
+// to the filter's width (FrameUniforms::sampling).
 RayDifferential rayDifferential(vec3 origin, vec3 direction) {
-  return RayDifferential(dFdx(origin), dFdy(origin), dFdx(direction), dFdy(direction));
+  const float w = frame.sampling.x;
+  return RayDifferential(w * dFdx(origin), w * dFdy(origin), w * dFdx(direction), w * dFdy(direction));
 }
 
 // The footprint in xz of the pixel where its ray, origin + s dir, meets a

@@ -18,12 +18,17 @@ struct FrameUniforms {
   vec4 viewport;               // width, height, 1/width, 1/height
   mat4 inverseProjection;      // clip to camera: view-space positions from the depth buffer
   Sh9 skySh;                   // the sky's radiance above the horizon (without sun), for its irradiance (sh9.h)
+  // x: the width in pixels that textures are filtered over: 1 for a frame on
+  // its own, 1/sqrt(N) for one of N jittered samples (each sample's share of
+  // the pixel), so the samples' average is the pixel's box filter, not a
+  // box filtered twice. yzw unused.
+  vec4 sampling;
 };
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 4 * 16 + 144);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 144);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

@@ -59,7 +59,10 @@ io::FloatImage frameChannels(const render::RenderedFrame& frame, const FrameChan
   const size_t pixels = size_t(frame.width) * frame.height;
   const bool positions = frame.position.size() == pixels * 4;
   if (options.transparentSky && !positions) throw std::logic_error("a transparent sky needs the frame's positions");
-  const std::vector<float> rgba = options.transparentSky ? transparentSky(frame) : std::vector<float>{};
+  // Several samples give the pixels the sky shows through their share of it.
+  const std::vector<float> rgba = !options.transparentSky     ? std::vector<float>{}
+                                  : !frame.foreground.empty() ? frame.foreground
+                                                              : transparentSky(frame);
   const std::vector<float> position = positions ? finitePositions(frame, options.farPlane) : std::vector<float>{};
   auto sourceOf = [&](const std::string& aov) -> Source {
     if (aov == "Z" || aov == "P") return {&position, 4};

@@ -17,7 +17,7 @@ std::vector<std::string> aovChannelNames(const std::string& aov);
 struct FrameChannelOptions {
   std::vector<std::string> aovs;  // the --aov names (written in the order Z N P ao ao_raw ao_ref)
   float farPlane = 0.0f;          // Z where nothing is hit, and P on the far plane there
-  bool transparentSky = false;    // RGBA 0 where nothing is hit (needs frame.position)
+  bool transparentSky = false;    // RGBA 0 where nothing is hit (frame.foreground, else from frame.position)
 };
 
 // RGBA, then each requested AOV's channels, interleaved. Where nothing is hit

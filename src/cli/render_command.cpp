@@ -9,6 +9,7 @@
 
 #include "base/atomic_file.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/frame_samples.hpp"
 #include "cli/frame_size.hpp"
 #include "cli/gpu_session.hpp"
 #include "cli/number_checks.hpp"
@@ -26,12 +27,15 @@
 namespace tp::app {
 namespace {
 
+// --samples with --reference, or its default: 64 rays a pixel.
+uint32_t referenceSamples(const RenderOptions& o) { return o.samples > 0 ? o.samples : 64; }
+
 // The CPU reference of the frame; the water is still simulated on the GPU,
 // exactly as the renderer simulates it.
 render::RenderedFrame renderReferenceFrame(GpuSession& session, const scene::Scene& scene, const RenderOptions& o) {
   std::optional<sim::WaterState> water;
   if (scene.water.enabled) water = sim::simulateWater(session.context(), scene, o.frame);
-  render::ReferenceOptions options{.samples = o.samples, .progress = [](double done) {
+  render::ReferenceOptions options{.samples = referenceSamples(o), .progress = [](double done) {
                                      std::fprintf(stderr, "reference: %3.0f%%\n", 100.0 * done);
                                    }};
   render::RenderedFrame frame =
@@ -125,11 +129,15 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->excludes(profile)
       ->excludes(frames);
   profile->excludes(frames);
-  cmd->add_option("--samples", o.samples, "Samples per pixel of --reference")
-      ->capture_default_str()
+  cmd->add_option("--samples", o.samples,
+                  "Samples per pixel: N jittered frames of the same moment, averaged (anti-aliasing; the water "
+                  "steps once; AOVs at the pixel centres; default 1), or with --reference N rays (default 64)")
+      ->type_name("N")
       ->check(inRange(1u, 65536u));
   return cmd;
 }
+
+uint32_t rasterSamples(const RenderOptions& o) { return o.samples > 0 ? o.samples : 1; }
 
 RenderOptions resolveOutputs(const RenderOptions& options) {
   RenderOptions o = options;
@@ -158,6 +166,9 @@ RenderOptions resolveOutputs(const RenderOptions& options) {
     *slot = out;
   }
   if (!o.aovs.empty() && o.exr.empty()) throw UsageError("--aov: the AOVs are EXR channels; add --out PATH.exr");
+  if (o.profile && o.samples > 1) {
+    throw UsageError("--profile times the passes of one frame: not with --samples " + std::to_string(o.samples));
+  }
   return o;
 }
 
@@ -187,7 +198,7 @@ int runRender(const RenderOptions& options) {
       plan.request.passWallTimes = true;
     }
     plan.request.frame = o.frame;
-    frame = renderer.render(plan.request);
+    frame = renderSamples(renderer, plan.request, rasterSamples(o), o.transparentSky);
   }
   writeFrame(o, scene, frame, o.frame, o.exr, o.png);
   const std::string device = o.reference ? "the CPU (reference)" : session.context().deviceName();

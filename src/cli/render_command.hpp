@@ -28,7 +28,7 @@ struct RenderOptions {
   bool noSkip = false;            // record every pass (RendererOptions::skipping off)
   std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
   bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
-  uint32_t samples = 64;          // per pixel, with --reference
+  uint32_t samples = 0;           // per pixel: jittered frames, or rays with --reference; 0: the default (1, 64)
   std::string frames;             // a range A-B: render each frame to the --out (and --png) pattern
   uint32_t checkpointEvery = 0;   // with frames: save the water every K frames in checkpointDir
   std::string checkpointDir;      // with frames: where checkpoints are saved and resumed from
@@ -45,6 +45,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
 // and png. Throws UsageError on an extension that names no format, two
 // outputs of one format, or --aov without an EXR.
 RenderOptions resolveOutputs(const RenderOptions& options);
+
+// --samples for the raster, or its default: one frame.
+uint32_t rasterSamples(const RenderOptions& options);
 
 // Returns the process exit code; throws std::exception on failure.
 int runRender(const RenderOptions& options);

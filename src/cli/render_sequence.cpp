@@ -12,6 +12,7 @@
 #include "base/background_work.hpp"
 #include "cli/checkpoint_files.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/frame_samples.hpp"
 #include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
 #include "cli/interrupt_guard.hpp"
@@ -103,7 +104,8 @@ int runRenderSequence(const RenderOptions& o) {
       plan.request.frame = f;
       if (scene::isAnimated(scene.camera))
         renderer.setCamera(scene::cameraAt(scene.camera, float(f) * scene.water.frameTime));
-      auto frame = std::make_shared<const render::RenderedFrame>(renderer.render(plan.request));
+      auto frame = std::make_shared<const render::RenderedFrame>(
+          renderSamples(renderer, plan.request, rasterSamples(o), o.transparentSky));
       std::optional<sim::WaterCheckpoint> checkpoint;
       if (o.checkpointEvery > 0 && f % o.checkpointEvery == 0) checkpoint = renderer.checkpoint();
       writer.start([&, frame, f, checkpoint = std::move(checkpoint)] {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "shared/tonemap.h"
 
@@ -34,17 +35,18 @@ std::vector<float> boxDownsample(std::span<const float> rgba, uint32_t width, ui
   return out;
 }
 
-ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
-                           std::span<const uint8_t> mask) {
-  if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("tonemappedError: images differ in size");
-  const size_t pixels = a.size() / 4;
-  if (!mask.empty() && mask.size() != pixels) throw std::invalid_argument("tonemappedError: mask differs in size");
+namespace {
+
+// RMSE and largest difference over the RGB of the pixels the mask keeps
+// (all, without one); `display(p)` gives pixel p of both images in display units.
+template <typename Display>
+ImageError displayDifference(size_t pixels, std::span<const uint8_t> mask, Display display) {
+  if (!mask.empty() && mask.size() != pixels) throw std::invalid_argument("image error: the mask differs in size");
   ImageError e;
   double sum = 0.0;
   for (size_t p = 0; p < pixels; ++p) {
     if (!mask.empty() && !mask[p]) continue;
-    const glm::vec3 da = shader::tonemap(glm::vec3(a[p * 4], a[p * 4 + 1], a[p * 4 + 2]), exposure);
-    const glm::vec3 db = shader::tonemap(glm::vec3(b[p * 4], b[p * 4 + 1], b[p * 4 + 2]), exposure);
+    const auto [da, db] = display(p);
     for (int c = 0; c < 3; ++c) {
       const double d = double(da[c]) - double(db[c]);
       sum += d * d;
@@ -54,6 +56,25 @@ ImageError tonemappedError(std::span<const float> a, std::span<const float> b, f
   }
   e.rmse = e.pixels ? std::sqrt(sum / double(3 * e.pixels)) : 0.0;
   return e;
+}
+
+}  // namespace
+
+ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
+                           std::span<const uint8_t> mask) {
+  if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("tonemappedError: images differ in size");
+  return displayDifference(a.size() / 4, mask, [&](size_t p) {
+    return std::pair{shader::tonemap(glm::vec3(a[p * 4], a[p * 4 + 1], a[p * 4 + 2]), exposure),
+                     shader::tonemap(glm::vec3(b[p * 4], b[p * 4 + 1], b[p * 4 + 2]), exposure)};
+  });
+}
+
+ImageError displayError(std::span<const uint8_t> a, std::span<const uint8_t> b, std::span<const uint8_t> mask) {
+  if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("displayError: images differ in size");
+  return displayDifference(a.size() / 4, mask, [&](size_t p) {
+    return std::pair{glm::vec3(a[p * 4], a[p * 4 + 1], a[p * 4 + 2]) / 255.0f,
+                     glm::vec3(b[p * 4], b[p * 4 + 1], b[p * 4 + 2]) / 255.0f};
+  });
 }
 
 std::vector<uint8_t> waterPixelMask(const RenderedFrame& aovs, const scene::Water& water) {

@@ -24,6 +24,10 @@ struct ImageError {
 ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
                            std::span<const uint8_t> mask = {});
 
+// The same difference between two RGBA8 sRGB images (the tonemap pass's
+// output, a filtered one: the morphological anti-aliasing), in display units.
+ImageError displayError(std::span<const uint8_t> a, std::span<const uint8_t> b, std::span<const uint8_t> mask = {});
+
 // A linear RGBA image averaged over factor x factor blocks (width and height
 // multiples of factor): a raster rendered at factor times the resolution, so
 // filtered, meets the reference's many samples per pixel at its silhouettes.

@@ -290,9 +290,8 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       const size_t k = size_t(y) * width + x;
       glm::vec3 origin, dir, sum(0.0f);
       for (uint32_t s = 0; s < options.samples; ++s) {
-        const float sx = (float(s) + 0.5f) / float(options.samples),
-                    sy = options.samples == 1 ? 0.5f : radicalInverse(s);
-        cameraRay(float(x) + sx, float(y) + sy, origin, dir);
+        const glm::vec2 point = pixelSamplePoint(s, options.samples);
+        cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
         sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);

@@ -9,7 +9,8 @@ namespace tp::render {
 
 class FrameTargets {
  public:
-  // `sampledDepth`: SSAO samples the depth target and a frame may read it back.
+  // `sampledDepth`: SSAO or the morphological anti-aliasing samples the depth
+  // target, and a frame may read it back.
   FrameTargets(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D extent, bool gbuffer, bool sampledDepth);
   const SurfaceTargets& surfaces() const { return surfaces_; }
   const GraphImage& ldr() const { return ldrRef_; }

@@ -30,6 +30,7 @@ inline constexpr PassKind kAov{"aov"};
 inline constexpr PassKind kReadbackNormal{"readback normal"};
 inline constexpr PassKind kReadbackPosition{"readback position"};
 inline constexpr PassKind kTonemap{"tonemap"};
+inline constexpr PassKind kAntialias{"antialias"};
 inline constexpr PassKind kReadbackHdr{"readback hdr"};
 inline constexpr PassKind kReadbackLdr{"readback ldr"};
 

@@ -18,6 +18,7 @@
 #include "render/glass.hpp"
 #include "render/glossy_environment.hpp"
 #include "render/ground.hpp"
+#include "render/morphological_aa.hpp"
 #include "render/objects.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/pool.hpp"
@@ -46,7 +47,8 @@ struct Renderer::Resources {
                                    gpu::MemoryUse::Upload, "frame uniforms")),
         uniformsRef(graph.buffer("frame uniforms", uniforms)),
         // The G-buffer: AO reads it (or nothing is skipped).
-        targets(ctx, graph, frame, scene.ao.enabled || !options.skipping, scene.ao.enabled),
+        targets(ctx, graph, frame, scene.ao.enabled || !options.skipping,
+                scene.ao.enabled || scene.render.antialiasing == "morphological"),
         sky(ctx, graph, scene),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
@@ -87,7 +89,15 @@ struct Renderer::Resources {
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
                     waterSurface ? &waterSurface->draw() : nullptr, aovInView);
     }
-    tonemap.declare(graph, surfaces.color, targets.ldr(), scene.render.exposure);
+    // The morphological anti-aliasing filters the tonemapped frame into the
+    // LDR target, which the viewer shows and the PNG is read from.
+    if (scene.render.antialiasing == "morphological") {
+      antialiasing.emplace(ctx, graph, frame);
+      tonemap.declare(graph, surfaces.color, antialiasing->input(), scene.render.exposure);
+      antialiasing->declare(graph, targets.ldr(), surfaces.depth, *samplers.clamp, *samplers.nearest);
+    } else {
+      tonemap.declare(graph, surfaces.color, targets.ldr(), scene.render.exposure);
+    }
     targets.declareReadbacks(graph);
   }
 
@@ -201,6 +211,7 @@ struct Renderer::Resources {
   std::optional<AmbientOcclusion> ao;
   std::optional<Glass> glass;
   std::optional<Aovs> aovs;  // when the renderer was made with them
+  std::optional<MorphologicalAntialiasing> antialiasing;
   // Filled by render() for the frame being recorded.
   ObjectsInView opaqueInView;  // the opaque spheres and the boxes in view
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
@@ -314,14 +325,17 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   RenderedFrame out;
   out.width = width_;
   out.height = height_;
-  const shader::FrameUniforms uniforms = frameUniforms(scene_, res_->sky.light(), width_, height_);
+  const shader::FrameUniforms uniforms =
+      frameUniforms(scene_, res_->sky.light(), width_, height_, request.pixelOffset, request.filterWidth);
   if (std::memcmp(res_->uniforms.mapped, &uniforms, sizeof(uniforms)) != 0) {
     std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
     res_->graph.touch(res_->uniformsRef.ref);
   }
-  out.worldToCamera = uniforms.view;
-  out.worldToNDC = uniforms.viewProjection;
-  out.inverseProjection = uniforms.inverseProjection;
+  // The camera's matrices, without the sample's jitter.
+  const shader::FrameUniforms centred = frameUniforms(scene_, res_->sky.light(), width_, height_);
+  out.worldToCamera = centred.view;
+  out.worldToNDC = centred.viewProjection;
+  out.inverseProjection = centred.inverseProjection;
   if (res_->water && res_->water->plan(scene_, request.frame)) {
     for (ResourceRef state : res_->waterSurface->draw().state.refs)
       res_->graph.touch(state);  // uploaded outside the graph

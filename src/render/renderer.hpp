@@ -26,6 +26,13 @@ struct FrameRequest {
   // Leave the tonemapped sRGB image on the GPU for the caller to show
   // (Renderer::presentable), with no readback.
   bool present = false;
+  // Where each pixel samples the image, in pixels from its centre (x right,
+  // y down): one jittered sample of an anti-aliased frame (cli/frame_samples).
+  // The frame's matrices (RenderedFrame::worldToNDC...) stay the centre's.
+  glm::vec2 pixelOffset{0.0f};
+  // The width in pixels textures are filtered over: 1/sqrt(N) for one of N
+  // jittered samples, each sample's share of the pixel.
+  float filterWidth = 1.0f;
 };
 
 // The tonemapped image of the last frame rendered with FrameRequest::present,
@@ -67,6 +74,10 @@ struct RenderedFrame {
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
   glm::mat4 inverseProjection{1.0f};
+  // With several samples and a transparent sky (cli/frame_samples): RGBA
+  // premultiplied by the share of the pixel's samples that hit something, for
+  // compositing over a plate; empty otherwise.
+  std::vector<float> foreground;
 };
 
 // Renders a scene offscreen at a fixed size. The frame graph is declared once;

@@ -131,6 +131,7 @@ void validateGround(const Scene& s) {
 void validateRender(const Scene& s) {
   requireRange(s.render.exposure, 1e-6f, 1e6f, "render.exposure");
   requireOneOf(s.render.refraction, choices::kRefraction, "render.refraction");
+  requireOneOf(s.render.antialiasing, choices::kAntialiasing, "render.antialiasing");
   requireRange(float(s.render.glassSearchSteps), 1.0f, 64.0f, "render.glass_search_steps");
 }
 

@@ -12,6 +12,7 @@ namespace tp::scene {
 namespace choices {
 inline const std::vector<std::string> kBoundary{"clamp", "wrap"};
 inline const std::vector<std::string> kRefraction{"accurate", "apparent"};
+inline const std::vector<std::string> kAntialiasing{"off", "morphological"};
 inline const std::vector<std::string> kAoPattern{"hammersley", "random"};
 inline const std::vector<std::string> kAoDepthLookup{"interpolated", "nearest"};
 inline const std::vector<std::string> kAoBlur{"off", "box", "bilateral"};
@@ -184,6 +185,10 @@ struct Render {
   bool caustics = true;
   // Binary-search steps for where a ray leaves a glass sphere (1 to 64).
   unsigned glassSearchSteps = 8;
+  // A morphological filter of the tonemapped frame (the viewer's and the
+  // PNG's; not the EXR's): "off" or "morphological". `render --samples N` is
+  // the anti-aliasing of the linear frame.
+  std::string antialiasing = "off";
   bool operator==(const Render&) const = default;
 };
 

@@ -138,6 +138,7 @@ void visitRenderKeys(R& r, Render& x) {
   r.choice("refraction", x.refraction, choices::kRefraction);
   r.flag("caustics", x.caustics);
   r.count("glass_search_steps", x.glassSearchSteps);
+  r.choice("antialiasing", x.antialiasing, choices::kAntialiasing);
 }
 
 template <typename R>

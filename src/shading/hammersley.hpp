@@ -29,6 +29,11 @@ inline float radicalInverse3(uint32_t k) {
 // the centre of stratum i, as the reference tracer's pixel samples use it.
 inline glm::vec2 hammersley(uint32_t i, uint32_t n) { return {(float(i) + 0.5f) / float(n), radicalInverse(i)}; }
 
+// Where sample i of n falls in its pixel (0..1 from the top-left corner): the
+// centre for a single sample, the Hammersley points otherwise. The reference
+// tracer's rays and the raster's jittered frames use the same points.
+inline glm::vec2 pixelSamplePoint(uint32_t i, uint32_t n) { return n == 1 ? glm::vec2(0.5f) : hammersley(i, n); }
+
 // A point of the unit square to the cosine-weighted unit hemisphere about +z
 // (Malley's method: the unit disc lifted to the hemisphere), as the SSAO
 // kernel and the AO reference sample it.
