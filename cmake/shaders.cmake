@@ -8,17 +8,23 @@ set(TIDEPOOL_SHADER_DIR ${CMAKE_SOURCE_DIR}/shaders_glsl)
 set(TIDEPOOL_SPIRV_DIR ${CMAKE_BINARY_DIR}/spirv)
 set(TIDEPOOL_COMMITTED_SPIRV_DIR ${CMAKE_SOURCE_DIR}/spirv)
 
-# Sources compiled a second time with a macro defined, as
-# SOURCE:MACRO:VARIANT (the variant's module is VARIANT.spv). The opaque
+# Sources compiled again with macros defined, as SOURCE:MACROS:VARIANT
+# (MACROS joined by '+'; the variant's module is VARIANT.spv). The opaque
 # surfaces' colour-only variants leave out the G-buffer outputs, for frames
 # without AO: outputs with no attachment behind them draw, but the
-# validation layer warns of each.
-set(TIDEPOOL_SHADER_VARIANTS
-  ground.frag:TP_COLOR_ONLY:ground.color_only.frag
-  pool_walls.frag:TP_COLOR_ONLY:pool_walls.color_only.frag
-  pool_floor.frag:TP_COLOR_ONLY:pool_floor.color_only.frag
-  sphere.frag:TP_COLOR_ONLY:sphere.color_only.frag
-  box.frag:TP_COLOR_ONLY:box.color_only.frag)
+# validation layer warns of each. The no-shadows variants leave out the sun
+# shadows' code, for scenes with nothing to cast one: on lavapipe the code
+# costs where it never runs (docs/sun-shadows.md).
+set(TIDEPOOL_SHADER_VARIANTS "")
+foreach(surface ground pool_walls pool_floor sphere box)
+  list(APPEND TIDEPOOL_SHADER_VARIANTS
+    ${surface}.frag:TP_COLOR_ONLY:${surface}.color_only.frag
+    ${surface}.frag:TP_NO_SHADOWS:${surface}.no_shadows.frag
+    ${surface}.frag:TP_COLOR_ONLY+TP_NO_SHADOWS:${surface}.color_only.no_shadows.frag)
+endforeach()
+foreach(water water_surface water_surface_apparent water_surface_below)
+  list(APPEND TIDEPOOL_SHADER_VARIANTS ${water}.frag:TP_NO_SHADOWS:${water}.no_shadows.frag)
+endforeach()
 
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS
@@ -40,7 +46,10 @@ function(tidepool_compile_shaders)
     set(src ${TIDEPOOL_SHADER_DIR}/${source_name})
     set(defines "")
     if(macro)
-      set(defines -D${macro})
+      string(REPLACE "+" ";" macros "${macro}")
+      foreach(m ${macros})
+        list(APPEND defines -D${m})
+      endforeach()
     endif()
     set(out ${TIDEPOOL_SPIRV_DIR}/${name}.spv)
     add_custom_command(

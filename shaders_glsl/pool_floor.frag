@@ -9,6 +9,7 @@ layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
+#include "shared/sun_shadow.h"  // reads `frame` in place
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 2) uniform sampler2D caustics;
 layout(binding = 3) uniform Medium { CameraMedium medium; };
@@ -16,7 +17,8 @@ layout(binding = 3) uniform Medium { CameraMedium medium; };
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
-  const float caustic = texture(caustics, causticsUv(pool, worldPosition.xz)).r;
+  const float caustic =
+      texture(caustics, causticsUv(pool, worldPosition.xz)).r * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera, 1.0);
   writeGbuffer(frame, n, poolFloorRadiance(pool, withoutSun(frame), worldPosition, n, footprint, caustic) * toCamera);

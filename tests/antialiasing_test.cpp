@@ -132,11 +132,22 @@ TEST_F(AntialiasingTest, SixteenSamplesMeetTheReference) {
   scene::Scene glass = asTheReference(scene::defaultScene());
   glass.spheres.at(0).material = "glass";
   glass.spheres.at(0).center = {1.6f, glass.water.level + 0.5f, 0.0f};
+  // A sphere's shadow on the ground, and one's falling into the pool with the wall's.
+  scene::Scene ground = asTheReference(scene::defaultScene());
+  ground.camera.position = {6.0f, 2.5f, 1.5f};
+  ground.camera.target = {2.5f, 0.0f, -1.5f};
+  ground.spheres.at(0).center = {3.0f, 0.7f, -1.0f};
+  ground.spheres.at(0).radius = 0.5f;
+  scene::Scene pool = ground;
+  pool.camera.position = {4.5f, 3.0f, 2.5f};
+  pool.camera.target = {-0.5f, 0.0f, 1.0f};
+  pool.spheres.at(0).center = {-0.5f, 0.6f, 2.6f};
   scene::Scene caustics = scene::defaultScene();
   caustics.ao.enabled = false;
   for (const Case& c :
        {Case{"default scene", asTheReference(scene::defaultScene()), 10}, Case{"submerged sphere", under, 10},
-        Case{"glass sphere by the pool", glass, 10}, Case{"default scene with its caustics", caustics, 10, false}}) {
+        Case{"glass sphere by the pool", glass, 10}, Case{"a shadow on the ground", ground, 10},
+        Case{"a shadow into the pool", pool, 10}, Case{"default scene with its caustics", caustics, 10, false}}) {
     const sim::WaterState water = sim::simulateWater(ctx(), c.scene, c.frame);
     const auto reference = render::renderReference(c.scene, &water, c.frame, kWidth, kHeight, {.samples = 256});
     render::Renderer renderer(ctx(), c.scene, kWidth, kHeight);

@@ -264,8 +264,10 @@ scene::Scene flatWaterFromAbove() {
   s.terrain.amplitude = 0.0f;
   s.spheres.clear();
   // The CPU's answer lights the floor as through flat water everywhere; the
-  // caustics pass also shades the strip the walls shadow (tested on its own).
+  // caustics pass also shades the strip the walls shadow (tested on its own),
+  // as do the sun's shadows (tests/sun_shadow_test.cpp and its GPU peer).
   s.render.caustics = false;
+  s.render.shadows = false;
   return s;
 }
 
@@ -479,6 +481,7 @@ TEST_F(WaterRenderTest, WaterReflectsTheSphereWhereTheReflectedRayMeetsIt) {
   with.camera.position = {-1.6f, 0.15f, -0.6f};
   with.camera.target = {0.9f, 0.0f, -0.7f};
   with.camera.fovYDegrees = 50.0f;
+  with.render.shadows = false;  // the answer is the reflection alone, not the sphere's shadow
   scene::Scene without = with;
   without.spheres.clear();
   render::Renderer a(ctx(), with, kWidth, kHeight), b(ctx(), without, kWidth, kHeight);

@@ -14,6 +14,7 @@ layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
+#include "shared/sun_shadow.h"  // reads `frame` in place
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform Objects { SceneObjects objects; };  // shared/object_cast.h's
@@ -29,22 +30,23 @@ vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direct
 // What a ray leaving the surface at p (inside the pool, below the rim) upwards
 // sees: an object, the part of a wall above the water, or the sky over the rim.
 vec3 radianceAbove(vec3 p, vec3 r) {
-  float nearest = 1e30;
-  vec3 radiance = sky(r);
   const vec2 walls = poolWallDistances(pool, p, r);
   const float sWall = min(walls.x, walls.y);
-  if (sWall > 0.0 && p.y + sWall * r.y <= pool.box.y) {  // below the rim
-    nearest = sWall;
-    // The wall's bricks point-sampled, as the reference tracer does: derivatives
-    // are not to be had in this divergent branch.
-    const vec3 wallNormal = poolWallNormal(walls, r);
-    radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0)), r,
-                              wallNormal, pool.wallGloss.xy);
+  const bool wall = sWall > 0.0 && p.y + sWall * r.y <= pool.box.y;  // below the rim
+  const ObjectHit object = castObjects(objects.count.xy, p, r, wall ? sWall : 1e30);
+  if (object.distance <= 0.0 && !wall) return sky(r);
+  // One sun share for what is met (the shader holds its code once).
+  const float distance = object.distance > 0.0 ? object.distance : sWall;
+  const float sunShare = frameSunShare(p + distance * r);
+  if (object.distance > 0.0) {
+    return glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal, sunShare), r, object.normal,
+                          object.material);
   }
-  const ObjectHit object = castObjects(objects.count.xy, p, r, nearest);
-  return object.distance > 0.0
-             ? glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), r, object.normal, object.material)
-             : radiance;
+  // The wall's bricks point-sampled, as the reference tracer does: derivatives
+  // are not to be had in this divergent branch.
+  const vec3 wallNormal = poolWallNormal(walls, r);
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0), sunShare), r,
+                        wallNormal, pool.wallGloss.xy);
 }
 
 // A ray's screen derivatives (Igehy 1999): of its origin and of its unit
@@ -76,17 +78,20 @@ vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
 // along its path through the water.
 vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
   const PoolHit hit = tracePool(pool, p, t);
-  vec3 radiance = hit.floor ? poolFloorRadiance(pool, frame, hit.position, hit.normal,
-                                                hitFootprint(rd, t, hit.distance, hit.normal),
-                                                texture(caustics, causticsUv(pool, hit.position.xz)).r)
-                            : glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0)),
-                                             t, hit.normal, pool.wallGloss.xy);
-  float distance = hit.distance;
-  const ObjectHit object = castObjects(objects.count.zw, p, t, distance);
+  const ObjectHit object = castObjects(objects.count.zw, p, t, hit.distance);
+  const float distance = object.distance > 0.0 ? object.distance : hit.distance;
+  // One sun share for what is met (the shader holds its code once).
+  const float sunShare = frameSunShare(p + distance * t);
+  vec3 radiance;
   if (object.distance > 0.0) {
-    distance = object.distance;
-    radiance = glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal), t, object.normal,
-                              object.material);
+    radiance = glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal, sunShare), t,
+                              object.normal, object.material);
+  } else if (hit.floor) {
+    radiance = poolFloorRadiance(pool, frame, hit.position, hit.normal, hitFootprint(rd, t, hit.distance, hit.normal),
+                                 texture(caustics, causticsUv(pool, hit.position.xz)).r * sunShare);
+  } else {
+    radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0), sunShare), t,
+                              hit.normal, pool.wallGloss.xy);
   }
   return radiance * exp(-surface.absorption.rgb * distance);
 }

@@ -4,6 +4,7 @@
 #define TP_SHARED_FRAME_H
 #include "shared/interop.h"
 #include "shared/sh9.h"
+#include "shared/shadow_casters.h"
 
 TP_BEGIN
 
@@ -23,12 +24,13 @@ struct FrameUniforms {
   // the pixel), so the samples' average is the pixel's box filter, not a
   // box filtered twice. yzw unused.
   vec4 sampling;
+  ShadowCasters shadows;  // what casts the sun's shadows (shadow_casters.h, sun_shadow.h)
 };
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 144);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 144 + (2 + 3 * 4) * 16);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

@@ -38,8 +38,9 @@ TP_INLINE float filteredChecker(vec2 p, vec2 w) {
 
 // Radiance leaving the checkered ground at world xz (pixel footprint in
 // metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
-// the caustics under water, 1 in the open) and by the sky's irradiance on a
-// surface with normal n (the sky above the horizon: the ground hides the rest).
+// the share of its disc in view, sunVisibility, times the caustics under
+// water) and by the sky's irradiance on a surface with normal n (the sky
+// above the horizon: the ground hides the rest).
 TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
   vec2 p = xz / ground.plane.z;
   float odd = filteredChecker(p, footprint / ground.plane.z);
@@ -62,7 +63,8 @@ TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
 }
 
 // `caustic`: the sun's irradiance through the waves relative to the open sky
-// (the caustics texture; 1 where caustics are off).
+// (the caustics texture; 1 where caustics are off), times its disc's share
+// in view (sunVisibility).
 TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
                                  float caustic) {
   return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal, caustic);
@@ -74,8 +76,10 @@ TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.b
 // The walls see the sky above the horizon on their side (half of it, for a
 // uniform sky); the pool's own rim is not counted. `footprint`: the pixel's
 // on the wall, in metres along and down it (0 point-samples the bricks).
-TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint) {
-  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
+// `sunShare`: the share of the sun's disc in view (sunVisibility).
+TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
+                                float sunShare) {
+  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
                     sh9Irradiance(frame.skySh, normal);
   return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi * irradiance;
 }
@@ -137,9 +141,10 @@ TP_INLINE vec3 viewTransmittance(CameraMedium medium, vec3 camera, vec3 p) {
 }
 
 // Lambertian objects (spheres and boxes): the sky above the horizon seen
-// from the normal (pi L (1 + n.y) / 2 for a uniform sky L).
-TP_INLINE vec3 objectRadiance(FrameUniforms frame, vec3 albedo, vec3 n) {
-  vec3 irradiance = vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
+// from the normal (pi L (1 + n.y) / 2 for a uniform sky L); `sunShare` the
+// share of the sun's disc in view (sunVisibility).
+TP_INLINE vec3 objectRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {
+  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
                     sh9Irradiance(frame.skySh, n);
   return albedo / kPi * irradiance;
 }

@@ -4,6 +4,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <algorithm>
 #include <mutex>
 #include <optional>
 
@@ -66,7 +67,13 @@ GlslCompile compileGlsl(const fs::path& source, const fs::path& includeDir, cons
   const std::string name = source.string();
   const char* names[] = {name.c_str()};
   shader.setStringsWithLengthsAndNames(strings, nullptr, names, 1);
-  const std::string preamble = define.empty() ? "" : "#define " + define + " 1\n";
+  // `define` may name several macros, joined by '+' (cmake/shaders.cmake's variants).
+  std::string preamble;
+  for (size_t from = 0; from < define.size();) {
+    const size_t plus = std::min(define.find('+', from), define.size());
+    preamble += "#define " + define.substr(from, plus - from) + " 1\n";
+    from = plus + 1;
+  }
   shader.setPreamble(preamble.c_str());
   // Vulkan 1.3 and SPIR-V 1.6: glslangValidator's --target-env vulkan1.3.
   shader.setEnvInput(glslang::EShSourceGlsl, *stage, glslang::EShClientVulkan, 100);

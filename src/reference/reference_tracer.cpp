@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -29,6 +30,18 @@ namespace {
 // How far a continued ray starts off the surface it leaves, in metres: far
 // above float round-off at the scene's scale (metres), far below any feature.
 constexpr float kSurfaceOffset = 1e-4f;
+
+// The point of the sun's disc sample s of pixel (x, y) aims its shadow rays
+// at: the base-3 and base-5 radical inverses (independent of the pixel's own
+// points), turned by a hash of the pixel (Cranley-Patterson) so that
+// neighbouring pixels do not share their penumbra's pattern.
+glm::vec2 sunSample(uint32_t s, uint32_t x, uint32_t y) {
+  uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u;
+  h = (h ^ (h >> 15)) * 0x2c1b3c6du;
+  h = (h ^ (h >> 12)) * 0x297a2d39u;
+  const glm::vec2 turn(float(h & 0xffffu) / 65536.0f, float(h >> 16) / 65536.0f);
+  return glm::fract(glm::vec2(radicalInverse3(s), radicalInverse5(s)) + turn);
+}
 
 enum class Material { Ground, PoolWalls, PoolFloor, Water, Box, Sphere };
 
@@ -67,6 +80,8 @@ class Tracer {
   Tracer(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const shader::FrameUniforms& uniforms,
          std::optional<SkyImage> skyImage, uint32_t maxSpecular)
       : uniforms_(uniforms),
+        shadows_(scene.render.shadows),
+        sunRadius_(glm::radians(scene.sky.sunAngularRadiusDegrees)),
         sky_(skyParams(scene.sky)),
         skyImage_(std::move(skyImage)),
         ground_(groundParams(scene)),
@@ -77,6 +92,8 @@ class Tracer {
       PoolModel pool = poolModel(scene);
       pool_ = pool.params;
       floorVertices_ = std::move(pool.floorVertices);
+      poolHalf_ = 0.5f * scene.water.extent;
+      level_ = scene.water.level;
     }
     // The texels the glossy lobes integrate: the sky texture the raster's prefilter reads.
     if (hasGlossySurface(scene))
@@ -103,7 +120,8 @@ class Tracer {
 
   // Radiance arriving at the camera at `origin` from direction -dir: a glass
   // sphere, if one is nearer than what radiance() meets, else that.
-  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular,
+  // `sun`: the point of the sun's disc (the unit square's) this path's shadow rays aim at.
+  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, glm::vec2 sun,
                            SurfacePoint* first) const {
     const scene::Sphere* glass = nullptr;
     float nearest = std::numeric_limits<float>::infinity();
@@ -123,11 +141,12 @@ class Tracer {
         return transmittance * glassRadiance(*glass, p, dir);
       }
     }
-    return radiance(origin, dir, inWater, specular, first);
+    return radiance(origin, dir, inWater, specular, sun, first);
   }
 
   // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
-  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, SurfacePoint* first) const {
+  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, glm::vec2 sun,
+                     SurfacePoint* first) const {
     const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
     if (!hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
     const glm::vec3 p = origin + hit.distance * dir;
@@ -136,7 +155,7 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n), dir, n,
+      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, sun)), dir, n,
                                     glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
@@ -144,26 +163,27 @@ class Tracer {
       case Material::Ground: {
         const glm::vec3 n(0.0f, 1.0f, 0.0f);
         if (first) *first = {p, n};
-        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, 1.0f);
+        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, sunShare(p, sun));
       }
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f)), dir, n,
-                                      glm::vec2(pool_.wallGloss));
+        return transmittance *
+               glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, sun)), dir, n,
+                      glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
-        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), 1.0f);
+        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, sun));
       }
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n);
+        return transmittance * shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, sun));
       }
       case Material::Water:
-        return transmittance * water(p, dir, hit, specular, first);
+        return transmittance * water(p, dir, hit, specular, sun, first);
       case Material::Sphere:
         break;
     }
@@ -171,6 +191,39 @@ class Tracer {
   }
 
  private:
+  // Whether anything but the water's surface meets origin + s dir for s in (0, limit).
+  bool blocked(glm::vec3 origin, glm::vec3 dir, float limit) const {
+    float from = kSurfaceOffset;
+    for (;;) {
+      const ReferenceHit hit = bvh_->intersect(origin, dir, from);
+      if (!hit.hit() || hit.distance >= limit) return false;
+      if (hit.mesh != waterMesh_ || hit.sphere >= 0) return true;
+      from = hit.distance + kSurfaceOffset;  // through the surface: the flat water's bend is below
+    }
+  }
+
+  // 1 where the shadow ray from p to the point `sample` of the sun's disc
+  // (uniform over the disc) meets nothing, else 0: under the water in the
+  // pool, bent as through flat water at its level (shared/sun_shadow.h's
+  // model), traced against every mesh and sphere the camera sees.
+  float sunShare(glm::vec3 p, glm::vec2 sample) const {
+    if (!shadows_) return 1.0f;
+    const glm::vec3 toSun(uniforms_.sunDirection);
+    const glm::vec3 side = glm::normalize(
+        glm::cross(toSun, std::abs(toSun.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f)));
+    const glm::vec3 up = glm::cross(side, toSun);
+    const float r = sunRadius_ * std::sqrt(sample.x), angle = glm::two_pi<float>() * sample.y;
+    const glm::vec3 dir =
+        glm::normalize(std::cos(r) * toSun + std::sin(r) * (std::cos(angle) * side + std::sin(angle) * up));
+    if (dir.y <= 0.0f) return 0.0f;
+    const bool underWater = waterMesh_ >= 0 && p.y < level_ && std::max(std::abs(p.x), std::abs(p.z)) <= poolHalf_;
+    if (!underWater) return blocked(p, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
+    const glm::vec3 inWater = -glm::refract(-dir, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+    const float toSurface = (level_ - p.y) / inWater.y;
+    if (blocked(p, inWater, toSurface)) return 0.0f;
+    return blocked(p + toSurface * inWater, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
+  }
+
   glm::vec3 sky(glm::vec3 dir) const {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
@@ -197,7 +250,8 @@ class Tracer {
   }
 
   // Both branches at the surface, weighted by the exact Fresnel reflectance.
-  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, SurfacePoint* first) const {
+  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, glm::vec2 sun,
+                  SurfacePoint* first) const {
     const scene::Mesh& mesh = tracedMeshes_[size_t(waterMesh_)];
     const uint32_t* corner = &mesh.indices[size_t(hit.triangle) * 3];
     const glm::vec2 b = hit.barycentric;
@@ -219,7 +273,7 @@ class Tracer {
     auto follow = [&](glm::vec3 d) {
       const bool below = glm::dot(d, up) < 0.0f;
       const glm::vec3 start = p + (below ? -kSurfaceOffset : kSurfaceOffset) * up;
-      return radiance(start, d, below, specular + 1, nullptr);
+      return radiance(start, d, below, specular + 1, sun, nullptr);
     };
     glm::vec3 result = reflectance * follow(glm::normalize(dir + 2.0f * cosI * n));
     if (reflectance < 1.0f) {
@@ -230,6 +284,10 @@ class Tracer {
   }
 
   shader::FrameUniforms uniforms_;
+  bool shadows_;           // render.shadows
+  float sunRadius_;        // radians
+  float poolHalf_ = 0.0f;  // half the pool's side
+  float level_ = 0.0f;     // the water's rest level
   shader::SkyParams sky_;
   std::optional<SkyImage> skyImage_;
   std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
@@ -292,12 +350,13 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const glm::vec2 point = pixelSamplePoint(s, options.samples);
         cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
-        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, nullptr);
+        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, sunSample(s, x, y), nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;
       cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
-      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, &first);  // no branches: the surface alone
+      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, glm::vec2(0.0f),
+                            &first);  // no branches: the surface alone
       for (int c = 0; c < 3; ++c) {
         out.rgba[k * 4 + c] = color[c];
         out.normal[k * 4 + c] = first.normal[c];

@@ -2,6 +2,7 @@
 
 #include "gpu/commands.hpp"
 #include "render/pass_kinds.hpp"
+#include "shading/frame_uniforms.hpp"
 #include "shading/water_model.hpp"
 
 namespace tp::render {
@@ -9,7 +10,8 @@ namespace tp::render {
 Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer)
     : params_(groundParams(scene)),
       pipeline_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer))) {}
+          ctx,
+          opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer, castsShadows(scene)))) {}
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
   graph.pass(passes::kGround, [this, targets, in](PassBuilder& pass) {

@@ -2,15 +2,16 @@
 
 #include "gpu/commands.hpp"
 #include "render/pass_kinds.hpp"
+#include "shading/frame_uniforms.hpp"
 #include "shading/objects_model.hpp"
 
 namespace tp::render {
 
-Objects::Objects(const gpu::Context& ctx, bool gbuffer)
+Objects::Objects(const gpu::Context& ctx, bool gbuffer, bool shadows)
     : spheres_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer))),
-      boxes_(gpu::createGraphicsPipeline(ctx,
-                                         opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer))) {}
+          ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer, shadows))),
+      boxes_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer, shadows))) {}
 
 void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                       const ObjectsInView& inView) const {

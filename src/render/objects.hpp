@@ -18,7 +18,8 @@ struct ObjectsInView {
 
 class Objects {
  public:
-  Objects(const gpu::Context& ctx, bool gbuffer);
+  // `shadows`: the surfaces' shadows variant (shading/frame_uniforms.hpp's castsShadows).
+  Objects(const gpu::Context& ctx, bool gbuffer, bool shadows);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                const ObjectsInView& inView) const;
 

@@ -6,6 +6,7 @@
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/sky_image.hpp"
+#include "shading/frame_uniforms.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "shared/objects.h"
@@ -13,9 +14,10 @@
 namespace tp::render {
 
 Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
-    : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, gbuffer))),
-      floor_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), gbuffer))) {
+    : walls_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, gbuffer, castsShadows(scene)))),
+      floor_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4),
+                                                             gbuffer, castsShadows(scene)))) {
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,

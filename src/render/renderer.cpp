@@ -66,7 +66,7 @@ struct Renderer::Resources {
     ground.declare(graph, surfaces, in);
     if (pool) pool->declare(graph, surfaces, in);
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
-      objects.emplace(ctx, gbuffer);
+      objects.emplace(ctx, gbuffer, castsShadows(scene));
       objects->declare(graph, surfaces, in, opaqueInView);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -325,8 +325,10 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   RenderedFrame out;
   out.width = width_;
   out.height = height_;
-  const shader::FrameUniforms uniforms =
+  const float time = float(request.frame) * scene_.water.frameTime;
+  shader::FrameUniforms uniforms =
       frameUniforms(scene_, res_->sky.light(), width_, height_, request.pixelOffset, request.filterWidth);
+  uniforms.shadows = shadowCasters(scene_, time);
   if (std::memcmp(res_->uniforms.mapped, &uniforms, sizeof(uniforms)) != 0) {
     std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
     res_->graph.touch(res_->uniformsRef.ref);
@@ -341,8 +343,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
       res_->graph.touch(state);  // uploaded outside the graph
   }
   // Spheres with a path are where the path puts them at this frame's time.
-  res_->placeObjects(scene_, float(request.frame) * scene_.water.frameTime, uniforms.viewProjection,
-                     scene_.render.glassSearchSteps);
+  res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
 
   gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most

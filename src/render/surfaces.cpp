@@ -79,11 +79,15 @@ void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingA
   cmd.endRendering();
 }
 
+std::string shadowVariant(const std::string& fragmentShader, bool shadows) {
+  return shadows ? fragmentShader : fragmentShader.substr(0, fragmentShader.rfind('.')) + ".no_shadows.frag";
+}
+
 gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
-                                         uint32_t pushSize, bool gbuffer) {
+                                         uint32_t pushSize, bool gbuffer, bool shadows) {
   const std::string colorOnly = fragmentShader.substr(0, fragmentShader.rfind('.')) + ".color_only.frag";
   return {.vertexShader = vertexShader,
-          .fragmentShader = gbuffer ? fragmentShader : colorOnly,
+          .fragmentShader = shadowVariant(gbuffer ? fragmentShader : colorOnly, shadows),
           .pushSize = pushSize,
           .colorFormats = gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
           .depthFormat = kDepthFormat,

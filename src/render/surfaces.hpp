@@ -67,9 +67,14 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& targ
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
               const std::function<void()>& draw);
 
+// The variant of a fragment shader (NAME.frag) without the sun shadows' code
+// (NAME.no_shadows.frag) unless `shadows` (shading/frame_uniforms.hpp's castsShadows).
+std::string shadowVariant(const std::string& fragmentShader, bool shadows);
+
 // A pipeline of an opaque surface: colour, the two G-buffer targets (or,
-// without them, the fragment shader's colour-only variant), depth.
+// without them, the fragment shader's colour-only variant), depth; the
+// shadows' variant as shadowVariant gives it.
 gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
-                                         uint32_t pushSize, bool gbuffer);
+                                         uint32_t pushSize, bool gbuffer, bool shadows);
 
 }  // namespace tp::render

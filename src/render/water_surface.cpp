@@ -3,13 +3,14 @@
 #include "gpu/commands.hpp"
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
+#include "shading/frame_uniforms.hpp"
 #include "shading/water_model.hpp"
 
 namespace tp::render {
 namespace {
 
 // One side of the water mesh, the other side culled.
-gpu::GraphicsPipelineDesc waterSide(const char* fragmentShader, vk::CullModeFlags cull) {
+gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullModeFlags cull) {
   return {.vertexShader = "water_surface.vert",
           .fragmentShader = fragmentShader,
           .pushSize = sizeof(shader::WaterSurfaceParams),
@@ -28,9 +29,11 @@ bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction =
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
                            sim::GpuStepper& stepper, vk::Extent2D frame)
     : above_(gpu::createGraphicsPipeline(
-          ctx, waterSide(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+          ctx, waterSide(shadowVariant(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+                                       castsShadows(scene)),
                          vk::CullModeFlagBits::eBack))),
-      below_(gpu::createGraphicsPipeline(ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront))) {
+      below_(gpu::createGraphicsPipeline(ctx, waterSide(shadowVariant("water_surface_below.frag", castsShadows(scene)),
+                                                        vk::CullModeFlagBits::eFront))) {
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                      "water grid indices");

@@ -189,6 +189,9 @@ struct Render {
   // PNG's; not the EXR's): "off" or "morphological". `render --samples N` is
   // the anti-aliasing of the linear frame.
   std::string antialiasing = "off";
+  // The sun's shadows (shared/sun_shadow.h): from the opaque spheres, the
+  // boxes and the pool's walls, soft by the sun's angular radius.
+  bool shadows = true;
   bool operator==(const Render&) const = default;
 };
 

@@ -139,6 +139,7 @@ void visitRenderKeys(R& r, Render& x) {
   r.flag("caustics", x.caustics);
   r.count("glass_search_steps", x.glassSearchSteps);
   r.choice("antialiasing", x.antialiasing, choices::kAntialiasing);
+  r.flag("shadows", x.shadows);
 }
 
 template <typename R>

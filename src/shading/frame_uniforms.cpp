@@ -1,8 +1,40 @@
 #include "shading/frame_uniforms.hpp"
 
+#include <algorithm>
+
+#include "shading/objects_model.hpp"
+#include "shading/pool_model.hpp"
 #include "shading/sky_model.hpp"
 
 namespace tp::render {
+
+bool castsShadows(const scene::Scene& scene) {
+  const bool opaqueSphere = std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                                        [](const scene::Sphere& s) { return !scene::isGlass(s); });
+  return scene.render.shadows && (opaqueSphere || !scene.boxes.empty() || hasPool(scene));
+}
+
+shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
+  shader::ShadowCasters c{};
+  c.sun.x = glm::radians(scene.sky.sunAngularRadiusDegrees);
+  if (!castsShadows(scene)) return c;  // nothing casts: sunVisibility is 1
+  uint32_t spheres = 0;
+  for (const scene::Sphere& s : scene.spheres) {
+    // Glass lets the light through (its caustic is not drawn).
+    if (scene::isGlass(s) || spheres == TP_MAX_SPHERES) continue;
+    c.spheres[spheres++] = glm::vec4(scene::sphereCenterAt(s, time), s.radius);
+  }
+  const uint32_t boxes = uint32_t(std::min<size_t>(scene.boxes.size(), TP_MAX_BOXES));
+  for (uint32_t b = 0; b < boxes; ++b) {
+    const shader::BoxParams box = boxParams(scene.boxes[b]);
+    c.boxCenter[b] = box.center;
+    c.boxHalfSize[b] = box.halfSize;
+  }
+  const bool pool = hasPool(scene);
+  c.sun = glm::vec4(c.sun.x, float(spheres), float(boxes), pool ? 1.0f : 0.0f);
+  if (pool) c.pool = glm::vec4(0.5f * scene.water.extent, scene.ground.height, scene.water.level, scene.water.ior);
+  return c;
+}
 
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, uint32_t width, uint32_t height) {
   return frameUniforms(scene, proceduralSkyLight(scene.sky), width, height);

@@ -5,7 +5,18 @@
 
 namespace tp::render {
 
-// Fills the per-frame uniforms: camera matrices for a width x height image and
+// Whether anything in the scene casts the sun's shadow (render.shadows on,
+// and an opaque sphere, a box or a pool): otherwise the surfaces' shaders
+// are the variants without the shadows' code.
+bool castsShadows(const scene::Scene& scene);
+
+// What casts the sun's shadows at `time`: the scene's opaque spheres (the
+// first TP_MAX_SPHERES) where their paths put them, its boxes, its pool's
+// walls; nothing with render.shadows off.
+shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
+
+// Fills the per-frame uniforms but for the shadows (none: the caller's to
+// set, from shadowCasters): camera matrices for a width x height image and
 // the light (the procedural sky's, when none is given). `pixelOffset` moves
 // where each pixel samples the image, in pixels from its centre (x right, y
 // down): the jitter of an anti-aliased frame's samples; `filterWidth` the

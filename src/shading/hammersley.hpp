@@ -25,6 +25,13 @@ inline float radicalInverse3(uint32_t k) {
   return result;
 }
 
+// Base-5 radical inverse.
+inline float radicalInverse5(uint32_t k) {
+  float result = 0.0f, digit = 1.0f / 5.0f;
+  for (; k > 0; k /= 5, digit /= 5.0f) result += float(k % 5) * digit;
+  return result;
+}
+
 // Point i of the n-point Hammersley set in [0,1)^2. The first coordinate is
 // the centre of stratum i, as the reference tracer's pixel samples use it.
 inline glm::vec2 hammersley(uint32_t i, uint32_t n) { return {(float(i) + 0.5f) / float(n), radicalInverse(i)}; }

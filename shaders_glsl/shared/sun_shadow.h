@@ -1,0 +1,210 @@
+// Sun shadows: the share of the sun's disc a point sees past the opaque
+// spheres, the boxes and the pool's walls, for every diffuse surface's sun
+// term (shading.h). Shared with C++ to test it against closed forms and
+// against rays sampled over the disc; the reference does not use it: it
+// traces its own shadow rays (reference_tracer.cpp).
+//
+// Under the water the shadow ray is bent as through flat water: from the
+// point up along the sun's refracted direction to the surface, then on
+// towards the sun. The waves' focusing is the caustics map's.
+//
+// In GLSL it reads the includer's `frame` (shared/frame.h's FrameUniforms)
+// in place, so include it after that uniform block: a struct passed by value
+// is copied whole for every pixel on lavapipe, and arrays indexed in a loop
+// then live in scratch memory (shared/object_cast.h found the same). In C++
+// the casters come by reference.
+#ifndef TP_SHARED_SUN_SHADOW_H
+#define TP_SHARED_SUN_SHADOW_H
+#include "shared/constants.h"
+#include "shared/interop.h"
+#include "shared/objects.h"
+#include "shared/shadow_casters.h"
+
+#ifdef __cplusplus
+#define TP_CASTERS_PARAM const ShadowCasters &casters,
+#define TP_CASTERS_ARG casters,
+#define TP_CASTERS casters
+#else
+#define TP_CASTERS_PARAM
+#define TP_CASTERS_ARG
+#define TP_CASTERS frame.shadows
+#endif
+
+TP_BEGIN
+
+
+// A point this much farther from a sphere's centre than its radius is off it:
+// nearer, it is the sphere's own surface (its tessellation lies inside), which
+// its own n.l shades.
+const float kShadowOwnSurface = 1.002f;
+// Sun directions sampled over the disc for the boxes' shadows (a Fermat
+// spiral), and how far along each a ray starts off the surface, in metres.
+const uint kBoxShadowRays = 8u;
+const float kShadowRayStart = 1e-3f;
+
+// The area where two discs of radii a and b, their centres d apart, overlap.
+TP_INLINE float discOverlap(float a, float b, float d) {
+  if (d >= a + b) return 0.0f;
+  if (d <= abs(a - b)) return kPi * min(a, b) * min(a, b);
+  float ca = clamp((d * d + a * a - b * b) / (2.0f * d * a), -1.0f, 1.0f);
+  float cb = clamp((d * d + b * b - a * a) / (2.0f * d * b), -1.0f, 1.0f);
+  float k = (-d + a + b) * (d + a - b) * (d - a + b) * (d + a + b);
+  return a * a * acos(ca) + b * b * acos(cb) - 0.5f * sqrt(max(k, 0.0f));
+}
+
+// The share of a disc of angular radius `radius` about `toSun` that a sphere
+// leaves visible from p: the two discs of directions (the sphere's of angular
+// radius asin(r / d)) overlapping, as flat discs.
+TP_INLINE float sphereSunVisibility(vec3 p, vec3 toSun, float radius, vec4 sphere) {
+  vec3 v = vec3(sphere) - p;
+  float d = length(v), along = dot(v, toSun);
+  float visible = 1.0f;
+  // Only near the shadow's cone: its centre towards the sun, and missed by
+  // less than r + radius d (sin(a + b) <= sin a + b), off its own surface.
+  bool near = along > 0.0f && d > sphere.w * kShadowOwnSurface &&
+              dot(v, v) - along * along < (sphere.w + radius * d) * (sphere.w + radius * d);
+  TP_ONLY_IF(near) {
+    float apart = atan(length(cross(v, toSun)), along);
+    float angular = asin(sphere.w / d);
+    visible = 1.0f - discOverlap(radius, angular, apart) / (kPi * radius * radius);
+  }
+  return visible;
+}
+
+// The share of a disc that lies on the inner side of a straight edge at
+// signed distance u disc radii from its centre (positive: the centre inside).
+TP_INLINE float discShareInside(float u) {
+  u = clamp(u, -1.0f, 1.0f);
+  return 0.5f + (u * sqrt(1.0f - u * u) + asin(u)) / kPi;
+}
+
+// The share of the disc about `toSun` seen from p through a square opening
+// of half side h at height `top` (p below it): each edge of the opening with
+// p spans a plane, and the directions on its inner side pass the edge.
+TP_INLINE float openingSunVisibility(vec3 p, vec3 toSun, float radius, float h, float top) {
+  float above = top - p.y;
+  float share = 1.0f;
+  // The inner normals of the planes through p and the edges x = h, x = -h,
+  // z = h, z = -h: along the edge's axis a, out of it by the side s.
+  TP_DONT_UNROLL for (int edge = 0; edge < 4 && above > 0.0f; ++edge) {
+    float s = (edge % 2 == 0) ? 1.0f : -1.0f;
+    vec3 n = edge < 2 ? vec3(-s * above, h - s * p.x, 0.0f) : vec3(0.0f, h - s * p.z, -s * above);
+    share *= discShareInside(asin(dot(normalize(n), toSun)) / radius);
+  }
+  return share;
+}
+
+// Whether origin + s dir meets the box for some s > 0: the slab test without
+// the face it enters by, vector-wide (a shadow ray needs no normal).
+TP_INLINE bool rayMeetsBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
+  vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
+  vec3 rel = origin - vec3(center);
+  vec3 o = vec3(dot(rel, ax), rel.y, dot(rel, az));
+  vec3 d = vec3(dot(dir, ax), dir.y, dot(dir, az));
+  // Parallel axes: a tiny direction keeps the division finite and the sign right.
+  vec3 inverse = 1.0f / max(abs(d), vec3(1e-12f)) * sign(d + vec3(1e-30f));
+  vec3 a = (-vec3(halfSize) - o) * inverse, b = (vec3(halfSize) - o) * inverse;
+  vec3 enter = min(a, b), leave = max(a, b);
+  float sNear = max(max(enter.x, enter.y), enter.z), sFar = min(min(leave.x, leave.y), leave.z);
+  return sFar >= max(sNear, 0.0f);
+}
+
+// The share of the disc about `toSun` no box hides from p (rays over the disc).
+TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY) {
+  uint boxes = uint(TP_CASTERS.sun.z);
+  vec3 side = normalize(cross(toSun, abs(toSun.y) < 0.9f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f)));
+  vec3 up = cross(side, toSun);
+  float seen = 0.0f;
+  TP_DONT_UNROLL for (uint i = 0u; i < (boxes > 0u ? kBoxShadowRays : 0u); ++i) {
+    float r = radius * sqrt((float(i) + 0.5f) / float(kBoxShadowRays));
+    float angle = 2.39996323f * float(i);  // the golden angle
+    vec3 dir = normalize(toSun + r * (cos(angle) * side + sin(angle) * up));
+    bool hidden = false;
+    for (uint b = 0u; b < boxes; ++b) {
+      vec4 center = TP_CASTERS.boxCenter[b], halfSize = TP_CASTERS.boxHalfSize[b];
+      if (center.y + halfSize.y < minY || center.y - halfSize.y > maxY) continue;  // not on this leg of the ray
+      if (rayMeetsBox(p + kShadowRayStart * dir, dir, center, halfSize)) hidden = true;
+    }
+    seen += hidden ? 0.0f : 1.0f;
+  }
+  return boxes > 0u ? seen / float(kBoxShadowRays) : 1.0f;
+}
+
+// The share of the sun's disc seen from p along one straight leg towards
+// `toSun` that ends `length` on, past the casters that reach between the
+// heights minY and maxY; a sphere counts where the leg's central ray enters
+// it (or, missing it, passes nearest) before the leg's end. `behind`: for the
+// leg in the air above water, the leg under it times how much the water
+// narrows the disc; a caster at distance D then sees the disc widened by
+// (D + behind) / D, as a turn of the sun moves the leg's start too; and a
+// start inside a sphere (the leg under the water passed through it) is dark.
+TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY,
+                                 float length, float behind) {
+  float share = 1.0f;
+  for (uint i = 0u; i < uint(TP_CASTERS.sun.y); ++i) {
+    vec4 s = TP_CASTERS.spheres[i];
+    vec3 v = vec3(s) - p;
+    if (behind > 0.0f && dot(v, v) < s.w * s.w) return 0.0f;
+    float along = dot(v, toSun), miss2 = dot(v, v) - along * along;
+    float enters = along - sqrt(max(s.w * s.w - miss2, 0.0f));
+    if (s.y + s.w < minY || s.y - s.w > maxY || enters > length) continue;
+    share = min(share, sphereSunVisibility(p, toSun, radius * (1.0f + behind / max(along, s.w)), s));
+  }
+  return min(share, boxesSunVisibility(TP_CASTERS_ARG p, toSun, radius, minY, maxY));
+}
+
+// The share of the sun's disc (direction toSun, above the horizon) that
+// lights the point p: 1 in the open, 0 in the umbra.
+TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
+  float radius = TP_CASTERS.sun.x;
+  if (toSun.y <= 0.0f) return 0.0f;
+  float h = TP_CASTERS.pool.x, rim = TP_CASTERS.pool.y, level = TP_CASTERS.pool.z;
+  // The walls (|x| or |z| = h) count as in: the opposite wall shades them.
+  bool inPool = TP_CASTERS.sun.w > 0.0f && max(abs(p.x), abs(p.z)) <= h + kShadowRayStart && p.y < rim;
+  bool underWater = inPool && p.y < level;
+  // Under the water: up the refracted ray to the surface, then on in the air.
+  // The disc narrows by 1/ior across the plane of incidence and by
+  // cos(air) / (ior cos(water)) in it: their geometric mean.
+  float ior = TP_CASTERS.pool.w;
+  vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / ior) : toSun;
+  float narrowing = underWater ? sqrt(toSun.y / inWater.y) / ior : 1.0f;
+  vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
+  float behind = narrowing * distance(p, q);
+  // One leg in the open, two under the water: each through its own opening
+  // (the water's at the level, then the rim), its casters on its side of the
+  // level. A loop, so that the shader holds the leg's code once, and none
+  // with nothing to cast a shadow: lavapipe skips a loop no pixel is in, where
+  // it runs every branch of an if.
+  bool anyCaster = TP_CASTERS.sun.y > 0.0f || TP_CASTERS.sun.z > 0.0f || inPool;
+  float legs = 1.0f, opening = 1.0f;
+  TP_DONT_UNROLL for (int leg = !anyCaster ? 2 : underWater ? 0 : 1; leg < 2; ++leg) {
+    bool water = leg == 0;
+    vec3 from = water ? p : q, dir = water ? inWater : toSun;
+    float legRadius = water ? radius * narrowing : radius;
+    float top = water ? level : rim;
+    legs = min(legs, legSunVisibility(TP_CASTERS_ARG from, dir, legRadius, water ? -1e30f : (underWater ? level : -1e30f),
+                                      water ? level : 1e30f, water ? distance(p, q) : 1e30f,
+                                      water ? 0.0f : behind));
+    // The air leg's rim is (top - level) / toSun.y on: the disc widens there as for the casters.
+    float widened = water || !underWater
+                        ? legRadius
+                        : legRadius * (1.0f + behind / max((top - level) / dir.y, kShadowRayStart));
+    opening *= openingSunVisibility(from, dir, inPool ? widened : 1.0f, h, inPool ? top : -1e30f);
+  }
+  return legs * opening;
+}
+
+#ifndef __cplusplus
+// The share of the sun's disc the frame's casters leave in view at p; all of
+// it in the variants for scenes where nothing casts a shadow (TP_NO_SHADOWS,
+// cmake/shaders.cmake), which hold none of the code above.
+#ifdef TP_NO_SHADOWS
+float frameSunShare(vec3 p) { return 1.0; }
+#else
+float frameSunShare(vec3 p) { return sunVisibility(p, vec3(frame.sunDirection)); }
+#endif
+#endif
+
+TP_END
+
+#endif
