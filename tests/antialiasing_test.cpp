@@ -199,7 +199,7 @@ TEST_F(AntialiasingTest, MorphologicalFilterMovesTheFrameTowardsTheReference) {
         name, frame, kWidth, kHeight, e1.rmse, e0.rmse, c1.pixels, c1.rmse, c0.rmse);
     EXPECT_GT(c1.pixels, size_t(kWidth));                 // the silhouettes
     EXPECT_LT(c1.pixels, size_t(kWidth * kHeight / 20));  // not the textures
-    EXPECT_LT(c1.rmse, 0.9 * c0.rmse) << name;            // measured 0.82 and 0.78 of it
+    EXPECT_LT(c1.rmse, 0.9 * c0.rmse) << name;            // measured 0.69 and 0.68 of it
     EXPECT_LT(e1.rmse, e0.rmse) << name;
   }
 }
