@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/pixel_rotation.hpp"
 #include "reference/reference_scene.hpp"
 #include "reference/row_progress.hpp"
 #include "shading/hammersley.hpp"
@@ -28,29 +29,6 @@ ReferenceScene occluders(const scene::Scene& scene, const sim::WaterState* water
   }
   return ReferenceScene(opaque, exactSpheres ? scene::sceneAt(scene, time).spheres : std::vector<scene::Sphere>{});
 }
-
-// A 32-bit integer hash with good avalanche (Wellons' "lowbias32" constants):
-// neighbouring pixel indices get unrelated offsets.
-uint32_t hashPixel(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
-
-float unitFloat(uint32_t bits) { return float(bits >> 8) * 0x1p-24f; }  // [0, 1), exact in float
-
-// The pixel's Cranley-Patterson rotation: every pixel uses the same Hammersley
-// set shifted modulo 1 by its own offset, so neighbouring pixels' errors are
-// uncorrelated (noise, not a pattern) while each stays a low-discrepancy set.
-glm::vec2 pixelOffset(size_t pixel) {
-  const uint32_t a = hashPixel(uint32_t(pixel)), b = hashPixel(a);
-  return {unitFloat(a), unitFloat(b)};
-}
-
-float wrap(float u) { return u >= 1.0f ? u - 1.0f : u; }
 
 // A right-handed orthonormal basis (t, b, n) about the unit normal n, valid for
 // every direction: its one division is by sign(n.z) + n.z, never less than 1
@@ -103,11 +81,11 @@ std::vector<float> referenceAmbientOcclusion(const scene::Scene& scene, const si
       const float lift =
           options.originOffset.empty() ? kSurfaceOffset : std::max(kSurfaceOffset, options.originOffset[k]);
       const glm::vec3 origin = p + lift * basis.n;
-      const glm::vec2 offset = pixelOffset(k);
+      const glm::vec2 offset = pixelRotation(k);
       uint32_t hits = 0;
       for (uint32_t i = 0; i < options.rays; ++i) {
         const glm::vec2 u = hammersley(i, options.rays);
-        const glm::vec3 local = cosineHemisphere({wrap(u.x + offset.x), wrap(u.y + offset.y)});
+        const glm::vec3 local = cosineHemisphere({wrapUnit(u.x + offset.x), wrapUnit(u.y + offset.y)});
         const glm::vec3 dir = glm::normalize(local.x * basis.t + local.y * basis.b + local.z * basis.n);
         const ReferenceHit hit = bvh.intersect(origin, dir, 0.0f);
         if (hit.hit() && hit.distance < options.radius) ++hits;

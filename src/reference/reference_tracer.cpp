@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "reference/glossy_quadrature.hpp"
+#include "reference/pixel_rotation.hpp"
 #include "reference/reference_scene.hpp"
 #include "reference/row_progress.hpp"
 #include "render/sky_image.hpp"
@@ -31,16 +32,13 @@ namespace {
 // above float round-off at the scene's scale (metres), far below any feature.
 constexpr float kSurfaceOffset = 1e-4f;
 
-// The point of the sun's disc sample s of pixel (x, y) aims its shadow rays
+// The point of the sun's disc sample s of pixel `pixel` aims its shadow rays
 // at: the base-3 and base-5 radical inverses (independent of the pixel's own
-// points), turned by a hash of the pixel (Cranley-Patterson) so that
-// neighbouring pixels do not share their penumbra's pattern.
-glm::vec2 sunSample(uint32_t s, uint32_t x, uint32_t y) {
-  uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u;
-  h = (h ^ (h >> 15)) * 0x2c1b3c6du;
-  h = (h ^ (h >> 12)) * 0x297a2d39u;
-  const glm::vec2 turn(float(h & 0xffffu) / 65536.0f, float(h >> 16) / 65536.0f);
-  return glm::fract(glm::vec2(radicalInverse3(s), radicalInverse5(s)) + turn);
+// points), turned by the pixel's rotation so that neighbouring pixels do not
+// share their penumbra's pattern.
+glm::vec2 sunSample(uint32_t s, size_t pixel) {
+  const glm::vec2 turn = pixelRotation(pixel);
+  return {wrapUnit(radicalInverseBase(s, 3) + turn.x), wrapUnit(radicalInverseBase(s, 5) + turn.y)};
 }
 
 enum class Material { Ground, PoolWalls, PoolFloor, Water, Box, Sphere };
@@ -350,7 +348,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const glm::vec2 point = pixelSamplePoint(s, options.samples);
         cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
-        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, sunSample(s, x, y), nullptr);
+        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, sunSample(s, k), nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;

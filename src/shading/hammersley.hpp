@@ -18,17 +18,11 @@ inline float radicalInverse(uint32_t k) {
   return float(bits) * 2.3283064365386963e-10f;  // 2^-32
 }
 
-// Base-3 radical inverse: the third coordinate of the 3D Hammersley points.
-inline float radicalInverse3(uint32_t k) {
-  float result = 0.0f, digit = 1.0f / 3.0f;
-  for (; k > 0; k /= 3, digit /= 3.0f) result += float(k % 3) * digit;
-  return result;
-}
-
-// Base-5 radical inverse.
-inline float radicalInverse5(uint32_t k) {
-  float result = 0.0f, digit = 1.0f / 5.0f;
-  for (; k > 0; k /= 5, digit /= 5.0f) result += float(k % 5) * digit;
+// The radical inverse of k in `base` (k's digits mirrored about the point):
+// base 3 gives the third coordinate of the 3D Hammersley points.
+inline float radicalInverseBase(uint32_t k, uint32_t base) {
+  float result = 0.0f, digit = 1.0f / float(base);
+  for (; k > 0; k /= base, digit /= float(base)) result += float(k % base) * digit;
   return result;
 }
 

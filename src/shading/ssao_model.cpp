@@ -13,7 +13,7 @@ void hammersleyPattern(const scene::Ao& ao, shader::SsaoKernel& k) {
   const uint32_t n = ao.kernelSize;
   for (uint32_t i = 0; i < n; ++i) {
     const float t = (float(i) + 0.5f) / float(n);
-    const glm::vec3 direction = cosineHemisphere(glm::vec2(radicalInverse(i), radicalInverse3(i)));
+    const glm::vec3 direction = cosineHemisphere(glm::vec2(radicalInverse(i), radicalInverseBase(i, 3)));
     k.samples[i] = glm::vec4(direction * glm::mix(0.1f, 1.0f, t * t), 0.0f);
   }
   for (uint32_t i = 0; i < ao.noiseSize * ao.noiseSize; ++i) {
