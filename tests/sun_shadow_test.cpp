@@ -205,6 +205,27 @@ TEST(SunShadow, UnderTheWaterTheRayBendsAtTheLevel) {
 
 namespace tp::test {
 
+// A half-submerged sphere's own surface just under the level, facing the sun:
+// lit. Its tessellation puts the point a hair inside the sphere, and the leg
+// up to the level ends inside it too; that is the sphere's own surface, not
+// a shadow (it drew a dotted dark line along the waterline).
+TEST(SunShadow, ASpheresOwnWaterlineIsNotItsShadow) {
+  ShadowCasters c = casters(float(glm::radians(1.0)));
+  const glm::vec4 sphere(0.0f, -0.2f, 0.0f, 0.45f);
+  c.sun.y = 1.0f;
+  c.sun.w = 1.0f;
+  c.spheres[0] = sphere;
+  c.pool = glm::vec4(1.5f, 0.15f, -0.15f, 1.333f);
+  const glm::vec3 toSun = glm::vec3(sunTowards(35.0, 60.0));
+  for (const float below : {1e-4f, 1e-3f, 5e-3f}) {
+    // On the sphere's circle at the level less `below`, on the sun's side, 0.1% inside.
+    const float y = -0.15f - below, ring = std::sqrt(sphere.w * sphere.w - (y - sphere.y) * (y - sphere.y));
+    const glm::vec3 out = glm::normalize(glm::vec3(toSun.x, 0.0f, toSun.z));
+    const glm::vec3 p = glm::vec3(sphere.x, y, sphere.z) + 0.999f * ring * out;
+    EXPECT_EQ(shader::sunVisibility(c, p, toSun), 1.0f) << below;
+  }
+}
+
 // The boxes' shadow rays' slab test against the renderer's own box cast
 // (shared/objects.h, which the reference-against-raster tests check): the
 // same verdict for rays from all around a turned box, and from inside it.

@@ -137,14 +137,16 @@ TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float ra
 // leg in the air above water, the leg under it times how much the water
 // narrows the disc; a caster at distance D then sees the disc widened by
 // (D + behind) / D, as a turn of the sun moves the leg's start too; and a
-// start inside a sphere (the leg under the water passed through it) is dark.
+// start inside a sphere (the leg under the water passed through it) is dark,
+// unless the receiver is on that sphere's own surface (at its waterline the
+// leg is a hair long, and the tessellated surface lies inside the sphere).
 TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY,
-                                 float length, float behind) {
+                                 float length, float behind, vec3 receiver) {
   float share = 1.0f;
   for (uint i = 0u; i < uint(TP_CASTERS.sun.y); ++i) {
     vec4 s = TP_CASTERS.spheres[i];
     vec3 v = vec3(s) - p;
-    if (behind > 0.0f && dot(v, v) < s.w * s.w) return 0.0f;
+    if (behind > 0.0f && dot(v, v) < s.w * s.w && distance(receiver, vec3(s)) > s.w * kShadowOwnSurface) return 0.0f;
     float along = dot(v, toSun), miss2 = dot(v, v) - along * along;
     float enters = along - sqrt(max(s.w * s.w - miss2, 0.0f));
     if (s.y + s.w < minY || s.y - s.w > maxY || enters > length) continue;
@@ -184,7 +186,7 @@ TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
     float top = water ? level : rim;
     legs = min(legs, legSunVisibility(TP_CASTERS_ARG from, dir, legRadius, water ? -1e30f : (underWater ? level : -1e30f),
                                       water ? level : 1e30f, water ? distance(p, q) : 1e30f,
-                                      water ? 0.0f : behind));
+                                      water ? 0.0f : behind, p));
     // The air leg's rim is (top - level) / toSun.y on: the disc widens there as for the casters.
     float widened = water || !underWater
                         ? legRadius
