@@ -24,6 +24,12 @@ struct ObjectHit {
   vec2 material;   // x: specular, y: roughness; boxes have none
 };
 
+// How far along its ray a sphere is met by a ray that starts inside it: at
+// once. The water's surface passes through a sphere at its waterline, and the
+// sphere's tessellation lies inside the sphere, so slivers of that surface
+// are drawn; their rays must see the sphere, not what lies past it.
+const float kInsideSphereHit = 1e-6f;
+
 // The nearest sphere or box along origin + s dir (dir unit) with s < limit,
 // among the first `counts` (x spheres, y boxes): count.xy for every object,
 // count.zw for those below the rim, which alone rays under the water can meet.
@@ -35,7 +41,10 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
   hit.material = vec2(0.0f);
   float nearest = limit;
   for (uint i = 0u; i < counts.x; ++i) {
-    float s = raySphere(origin, dir, objects.spheres[i]);
+    vec3 fromCentre = origin - vec3(objects.spheres[i]);
+    float s = dot(fromCentre, fromCentre) < objects.spheres[i].w * objects.spheres[i].w
+                  ? kInsideSphereHit
+                  : raySphere(origin, dir, objects.spheres[i]);
     if (s > 0.0f && s < nearest) {
       nearest = s;
       hit.distance = s;
