@@ -14,7 +14,9 @@ set(TIDEPOOL_COMMITTED_SPIRV_DIR ${CMAKE_SOURCE_DIR}/spirv)
 # without AO: outputs with no attachment behind them draw, but the
 # validation layer warns of each. The no-shadows variants leave out the sun
 # shadows' code, for scenes with nothing to cast one: on lavapipe the code
-# costs where it never runs (docs/sun-shadows.md).
+# costs where it never runs (docs/sun-shadows.md). The scattering variants
+# hold the light scattered in the water, for scenes whose water scatters
+# (docs/light-in-the-water.md); the ground is never under the water.
 set(TIDEPOOL_SHADER_VARIANTS "")
 foreach(surface ground pool_walls pool_floor sphere box)
   list(APPEND TIDEPOOL_SHADER_VARIANTS
@@ -22,9 +24,20 @@ foreach(surface ground pool_walls pool_floor sphere box)
     ${surface}.frag:TP_NO_SHADOWS:${surface}.no_shadows.frag
     ${surface}.frag:TP_COLOR_ONLY+TP_NO_SHADOWS:${surface}.color_only.no_shadows.frag)
 endforeach()
-foreach(water water_surface water_surface_apparent water_surface_below)
-  list(APPEND TIDEPOOL_SHADER_VARIANTS ${water}.frag:TP_NO_SHADOWS:${water}.no_shadows.frag)
+foreach(surface pool_walls pool_floor sphere box)
+  list(APPEND TIDEPOOL_SHADER_VARIANTS
+    ${surface}.frag:TP_SCATTERING:${surface}.scattering.frag
+    ${surface}.frag:TP_COLOR_ONLY+TP_SCATTERING:${surface}.color_only.scattering.frag
+    ${surface}.frag:TP_NO_SHADOWS+TP_SCATTERING:${surface}.no_shadows.scattering.frag
+    ${surface}.frag:TP_COLOR_ONLY+TP_NO_SHADOWS+TP_SCATTERING:${surface}.color_only.no_shadows.scattering.frag)
 endforeach()
+foreach(water water_surface water_surface_apparent water_surface_below)
+  list(APPEND TIDEPOOL_SHADER_VARIANTS
+    ${water}.frag:TP_NO_SHADOWS:${water}.no_shadows.frag
+    ${water}.frag:TP_SCATTERING:${water}.scattering.frag
+    ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING:${water}.no_shadows.scattering.frag)
+endforeach()
+list(APPEND TIDEPOOL_SHADER_VARIANTS glass.frag:TP_SCATTERING:glass.scattering.frag)
 
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS

@@ -10,12 +10,15 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(push_constant) uniform Push { BoxParams params; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition)) * toCamera, 1.0);
+  color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition)) * toCamera +
+                   viewInScatter(medium, worldPosition),
+               1.0);
   writeGbuffer(frame, n, objectRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0) * toCamera);
 }

@@ -14,5 +14,8 @@ void main() {
   const vec4 quad = gridQuadAt(surface, camera.xz);
   const ivec2 i = ivec2(quad.xy);
   const vec4 corners = vec4(heightAt(i.x, i.y), heightAt(i.x + 1, i.y), heightAt(i.x, i.y + 1), heightAt(i.x + 1, i.y + 1));
-  medium.absorption = underWaterSurface(surface, camera, corners, quad.zw) ? vec4(surface.absorption.rgb, 1.0) : vec4(0.0);
+  const bool under = underWaterSurface(surface, camera, corners, quad.zw);
+  medium.extinction = under ? vec4(surface.extinction.rgb, 1.0) : vec4(0.0);
+  medium.scattering = under ? surface.scattering : vec4(0.0);
+  medium.water = under ? vec4(surface.placement.y, surface.extinction.w, float(surface.grid.y), 0.0) : vec4(0.0);
 }

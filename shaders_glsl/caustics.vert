@@ -21,7 +21,7 @@ vec2 land(vec3 p, vec3 d, float floorY) {
 
 void main() {
   const vec3 sunRay = -frame.sunDirection.xyz;
-  const float eta = 1.0 / surface.absorption.w;
+  const float eta = 1.0 / surface.extinction.w;
   const float floorY = pool.box.y - pool.box.z;
   flatLanding = land(gridPosition(gl_VertexIndex, 0.0), refract(sunRay, vec3(0.0, 1.0, 0.0), eta), floorY);
   landing = land(gridPosition(gl_VertexIndex, 1.0), refract(sunRay, gridNormal(gl_VertexIndex), eta), floorY);

@@ -17,6 +17,8 @@ layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
+#include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform sampler2D skyTexture;
 // xyz: outward normal of the nearest back face, w: its view depth (0: none).
 layout(binding = 2) uniform sampler2D backFaces;
@@ -60,5 +62,7 @@ void main() {
   // No back face found at all (a sliver at the silhouette): straight through.
   const vec3 leaving = dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), ior) : inside;
   const vec3 radiance = mix(sky(leaving), sky(reflect(view, n)), reflectance);
-  color = vec4(radiance * viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition), 1.0);
+  color = vec4(radiance * viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition) +
+                   viewInScatter(medium, worldPosition),
+               1.0);
 }

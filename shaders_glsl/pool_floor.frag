@@ -10,6 +10,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 2) uniform sampler2D caustics;
 layout(binding = 3) uniform Medium { CameraMedium medium; };
@@ -20,6 +21,8 @@ void main() {
   const float caustic =
       texture(caustics, causticsUv(pool, worldPosition.xz)).r * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera, 1.0);
+  color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera +
+                   viewInScatter(medium, worldPosition),
+               1.0);
   writeGbuffer(frame, n, poolFloorRadiance(pool, withoutSun(frame), worldPosition, n, footprint, caustic) * toCamera);
 }

@@ -11,6 +11,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 layout(binding = 4) uniform sampler2D glossyMap;
@@ -21,7 +22,9 @@ void main() {
   const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n)) * frame.sampling.x;
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint, frameSunShare(worldPosition));
-  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera, 1.0);
+  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
+                   viewInScatter(medium, worldPosition),
+               1.0);
   // AO scales the Lambertian part's sky light only.
   writeGbuffer(frame, n, glossyMix(poolWallRadiance(pool, withoutSun(frame), worldPosition, n, footprint, 1.0), vec3(0.0),
                                    pool.wallGloss.x) * toCamera);

@@ -12,6 +12,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(binding = 2) uniform sampler2D glossyMap;
 layout(push_constant) uniform Push { SphereParams params; };
@@ -21,7 +22,9 @@ void main() {
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const vec3 diffuse = objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition));
-  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera, 1.0);
+  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
+                   viewInScatter(medium, worldPosition),
+               1.0);
   // AO scales the Lambertian part's sky light only.
   writeGbuffer(frame, n, glossyMix(objectRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0), vec3(0.0),
                                    params.material.x) * toCamera);

@@ -11,7 +11,7 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
-  const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
+  const vec3 t = refract(view, n, 1.0 / surface.extinction.w);
   const vec3 down = normalize(t);
   const RayDifferential rd = rayDifferential(worldPosition, down);
   if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(worldPosition, down, rd);

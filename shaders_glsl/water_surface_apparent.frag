@@ -16,11 +16,12 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
-  const vec3 t = refract(view, n, 1.0 / surface.absorption.w);
+  const vec3 t = refract(view, n, 1.0 / surface.extinction.w);
   if (dot(t, t) > 0.0 && t.y < 0.0) {
     const ivec2 texel = ivec2(apparentDepthTexel(pool, frame, worldPosition, t));
     const float distance = apparentDepthDistance(pool, worldPosition, t);
-    transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.absorption.rgb * distance);
+    transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.extinction.rgb * distance) +
+                  inScatter(worldPosition, t, distance);
   }
   color = vec4(mix(transmitted, reflected, waterFresnel(-dot(view, n))), 1.0);
 }

@@ -25,8 +25,9 @@ TEST(GlslCompiler, EveryEmbeddedModuleRecompilesToTheBuildsBits) {
   }
   EXPECT_GE(gpu::embeddedSpirvModules().size(), 30u);
   // cmake/shaders.cmake: five surfaces colour-only, without shadows and both;
-  // three water shaders without shadows.
-  EXPECT_EQ(variants, 18u);
+  // four of them scattering, in those four ways; three water shaders without
+  // shadows, scattering and both; glass scattering.
+  EXPECT_EQ(variants, 5u * 3u + 4u * 4u + 3u * 3u + 1u);
 }
 
 TEST(GlslCompiler, BrokenShadersReportWhereAndWhy) {

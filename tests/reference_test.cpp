@@ -268,13 +268,13 @@ TEST(CameraMedium, UnderTheSurfaceInsideThePoolOnly) {
   auto under = [&](glm::vec3 camera) {
     s.camera.position = camera;
     s.camera.target = camera + glm::vec3(1.0f, 0.0f, 0.0f);
-    return render::cameraMedium(s, &flat).absorption.w > 0.0f;
+    return render::cameraMedium(s, &flat).extinction.w > 0.0f;
   };
   EXPECT_TRUE(under({0.3f, s.water.level - 0.01f, -0.2f}));
   EXPECT_FALSE(under({0.3f, s.water.level + 0.01f, -0.2f}));
   EXPECT_FALSE(under({0.5f * s.water.extent + 0.01f, s.water.level - 0.5f, 0.0f}));  // outside the pool's square
   EXPECT_TRUE(under({0.5f * s.water.extent - 0.01f, s.water.level - 0.5f, 0.0f}));   // beyond the last cell centre
-  EXPECT_FALSE(render::cameraMedium(s, nullptr).absorption.w > 0.0f);
+  EXPECT_FALSE(render::cameraMedium(s, nullptr).extinction.w > 0.0f);
   // On a slope: the mesh's own triangle decides, not the rest level.
   sim::WaterState tilted = flat;
   for (uint32_t j = 0; j < tilted.n; ++j) {
@@ -282,7 +282,7 @@ TEST(CameraMedium, UnderTheSurfaceInsideThePoolOnly) {
   }
   s.camera.position = {0.0f, s.water.level + 0.3f, 0.0f};  // x = 0: cell 64 of 128, u there is 0.635
   s.camera.target = {1.0f, 0.0f, 0.0f};
-  EXPECT_TRUE(render::cameraMedium(s, &tilted).absorption.w > 0.0f);
+  EXPECT_TRUE(render::cameraMedium(s, &tilted).extinction.w > 0.0f);
 }
 
 // The camera under the surface: the pool, a box and the sphere seen through
@@ -297,7 +297,7 @@ TEST_F(ReferenceRasterTest, CameraUnderTheSurfaceMatchesTheReference) {
   s.boxes = {{{-0.6f, -0.9f, -1.0f}, {0.6f, 0.6f, 0.6f}, 30.0f, {0.25f, 0.55f, 0.3f}}};
   constexpr uint32_t width = 160, height = 90, frameNumber = 10;
   const sim::WaterState water = sim::simulateWater(ctx(), s, frameNumber);
-  ASSERT_GT(render::cameraMedium(s, &water).absorption.w, 0.0f);
+  ASSERT_GT(render::cameraMedium(s, &water).extinction.w, 0.0f);
   const auto reference = render::renderReference(s, &water, frameNumber, width, height, {.samples = 64});
   for (const char* mode : {"accurate", "apparent"}) {
     s.render.refraction = mode;

@@ -103,6 +103,14 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {&render::passes::kCameraMedium},
        {}},
+      {"water that scatters, the camera under it",
+       [](scene::Scene& s, const std::string&) {
+         s.water.scattering = {0.08f, 0.12f, 0.14f};
+         s.camera.position = {-1.4f, -0.75f, 1.5f};
+         s.camera.target = {0.9f, -0.2f, -0.7f};
+       },
+       {},
+       {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};

@@ -15,6 +15,7 @@ layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform Objects { SceneObjects objects; };  // shared/object_cast.h's
@@ -26,6 +27,18 @@ layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  //
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 
 vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
+
+// What the water scatters into the ray from `start` along `dir` (unit, under
+// the water) over `length`; nothing, and no code, in the variants for water
+// that does not scatter.
+#ifdef TP_SCATTERING
+vec3 inScatter(vec3 start, vec3 dir, float length) {
+  return waterInScatter(surface.extinction.rgb, surface.scattering, surface.placement.y, surface.extinction.w,
+                        surface.grid.y, start, dir, length);
+}
+#else
+vec3 inScatter(vec3 start, vec3 dir, float length) { return vec3(0.0); }
+#endif
 
 // What a ray leaving the surface at p (inside the pool, below the rim) upwards
 // sees: an object, the part of a wall above the water, or the sky over the rim.
@@ -93,12 +106,12 @@ vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
     radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0), sunShare), t,
                               hit.normal, pool.wallGloss.xy);
   }
-  return radiance * exp(-surface.absorption.rgb * distance);
+  return radiance * exp(-surface.extinction.rgb * distance) + inScatter(p, t, distance);
 }
 
 // Schlick's Fresnel reflectance, from the cosine of the angle on the air side.
 float waterFresnel(float cosAir) {
-  const float ior = surface.absorption.w;
+  const float ior = surface.extinction.w;
   const float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
   return f0 + (1.0 - f0) * pow(1.0 - clamp(cosAir, 0.0, 1.0), 5.0);
 }
@@ -111,12 +124,15 @@ vec4 shadeFromBelow(vec3 view, vec3 n) {
   n = -n;  // towards the camera, into the water
   const vec3 r = reflect(view, n);
   const vec3 reflected = radianceBelow(worldPosition, r, rayDifferential(worldPosition, r));
-  const vec3 t = refract(view, n, surface.absorption.w);
+  const vec3 t = refract(view, n, surface.extinction.w);
   const bool total = dot(t, t) == 0.0;
   const vec3 transmitted = total ? vec3(0.0) : radianceAbove(worldPosition, t);
   const float fresnel = total ? 1.0 : waterFresnel(-dot(t, n));
   const float toCamera = distance(frame.cameraPosition.xyz, worldPosition);
-  return vec4(mix(transmitted, reflected, fresnel) * exp(-surface.absorption.rgb * toCamera), 1.0);
+  const vec3 camera = frame.cameraPosition.xyz;
+  return vec4(mix(transmitted, reflected, fresnel) * exp(-surface.extinction.rgb * toCamera) +
+                  inScatter(camera, (worldPosition - camera) / toCamera, toCamera),
+              1.0);
 }
 
 #endif

@@ -137,7 +137,7 @@ TP_INLINE vec2 apparentDepthTexel(PoolParams pool, FrameUniforms frame, vec3 p, 
 // What reaches the camera from p along the straight path through the medium
 // around it (the water when the camera is under the surface).
 TP_INLINE vec3 viewTransmittance(CameraMedium medium, vec3 camera, vec3 p) {
-  return exp(-vec3(medium.absorption) * distance(camera, p));
+  return exp(-vec3(medium.extinction) * distance(camera, p));
 }
 
 // Lambertian objects (spheres and boxes): the sky above the horizon seen

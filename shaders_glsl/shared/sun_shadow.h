@@ -196,14 +196,53 @@ TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
   return legs * opening;
 }
 
+// Whether the sun's central ray from p reaches the sky (1) or not (0): bent
+// at the level under the water, past the spheres and boxes each leg can meet
+// (as sunVisibility counts them), out through the pool's walls and rim. The
+// point test of the light the water scatters (water_scattering.h), which
+// averages it along a path: far cheaper than the disc's share, whose
+// penumbra the average softens anyway.
+TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
+  if (toSun.y <= 0.0f) return 0.0f;
+  float h = TP_CASTERS.pool.x, rim = TP_CASTERS.pool.y, level = TP_CASTERS.pool.z;
+  bool inPool = TP_CASTERS.sun.w > 0.0f && max(abs(p.x), abs(p.z)) <= h && p.y < rim;
+  bool underWater = inPool && p.y < level;
+  vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / TP_CASTERS.pool.w) : toSun;
+  vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
+  // Where the ray reaches the rim's height: out of the opening, or into a wall.
+  vec3 top = q + toSun * (max(rim - q.y, 0.0f) / toSun.y);
+  if (inPool && max(max(abs(q.x), abs(q.z)), max(abs(top.x), abs(top.z))) > h) return 0.0f;
+  float open = 1.0f;
+  TP_DONT_UNROLL for (int leg = underWater ? 0 : 1; leg < 2; ++leg) {
+    bool water = leg == 0;
+    vec3 from = water ? p : q, dir = water ? inWater : toSun;
+    float length = water ? distance(p, q) : 1e30f;
+    float minY = water || !underWater ? -1e30f : level, maxY = water ? level : 1e30f;
+    for (uint i = 0u; i < uint(TP_CASTERS.sun.y); ++i) {
+      vec4 s = TP_CASTERS.spheres[i];
+      float hit = raySphere(from, dir, s);
+      if (s.y + s.w >= minY && s.y - s.w <= maxY && hit > 0.0f && hit < length) open = 0.0f;
+    }
+    for (uint b = 0u; b < uint(TP_CASTERS.sun.z); ++b) {
+      vec4 center = TP_CASTERS.boxCenter[b], halfSize = TP_CASTERS.boxHalfSize[b];
+      if (center.y + halfSize.y < minY || center.y - halfSize.y > maxY) continue;
+      if (rayMeetsBox(from + kShadowRayStart * dir, dir, center, halfSize)) open = 0.0f;
+    }
+  }
+  return open;
+}
+
 #ifndef __cplusplus
 // The share of the sun's disc the frame's casters leave in view at p; all of
 // it in the variants for scenes where nothing casts a shadow (TP_NO_SHADOWS,
 // cmake/shaders.cmake), which hold none of the code above.
+// And whether the sun's central ray from p is open (sunRayOpen).
 #ifdef TP_NO_SHADOWS
 float frameSunShare(vec3 p) { return 1.0; }
+float frameSunRayOpen(vec3 p) { return 1.0; }
 #else
 float frameSunShare(vec3 p) { return sunVisibility(p, vec3(frame.sunDirection)); }
+float frameSunRayOpen(vec3 p) { return sunRayOpen(p, vec3(frame.sunDirection)); }
 #endif
 #endif
 

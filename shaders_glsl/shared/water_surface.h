@@ -8,15 +8,18 @@ TP_BEGIN
 
 struct WaterSurfaceParams {
   vec4 placement;   // x, z: world position of the grid's corner (cell x = 0, z = 0); y: rest level; w: h
-  vec4 absorption;  // rgb: absorption coefficient of the water in 1/m; w: index of refraction
-  uvec4 grid;       // x: cells per side; yzw unused
+  vec4 extinction;  // rgb: the water's absorption plus scattering coefficients, 1/m; w: index of refraction
+  vec4 scattering;  // rgb: scattering coefficient in 1/m; w: its phase's anisotropy (water_scattering.h)
+  uvec4 grid;       // x: cells per side; y: the pieces of the scattered sun's shadows (water_scattering.h); zw unused
 };
 
 // The medium around the camera, decided on the GPU where the water lives
 // (camera_medium.comp; render/water_model.cpp for the CPU reference) and read
 // by the passes that draw what the camera sees directly, through no surface.
 struct CameraMedium {
-  vec4 absorption;  // rgb: absorption coefficient in 1/m (the water's under the surface, 0 in air); w: 1 under water
+  vec4 extinction;  // rgb: extinction coefficient in 1/m (the water's under the surface, 0 in air); w: 1 under water
+  vec4 scattering;  // rgb: scattering coefficient in 1/m (0 in air); w: its phase's anisotropy
+  vec4 water;       // x: the water's rest level; y: its index of refraction; z: the scattering's shadow pieces; w unused
 };
 
 // Where world xz falls on the surface mesh (vertex (i, j) at cell centre
@@ -55,8 +58,8 @@ TP_INLINE bool underWaterSurface(WaterSurfaceParams s, vec3 p, vec4 corners, vec
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::WaterSurfaceParams) == 48);
-static_assert(sizeof(tp::shader::CameraMedium) == 16);
+static_assert(sizeof(tp::shader::WaterSurfaceParams) == 64);
+static_assert(sizeof(tp::shader::CameraMedium) == 48);
 #endif
 
 #endif

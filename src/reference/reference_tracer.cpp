@@ -24,6 +24,7 @@
 #include "shared/pool_trace.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
+#include "shared/water_scattering.h"
 
 namespace tp::render {
 namespace {
@@ -40,6 +41,22 @@ glm::vec2 sunSample(uint32_t s, size_t pixel) {
   const glm::vec2 turn = pixelRotation(pixel);
   return {wrapUnit(radicalInverseBase(s, 3) + turn.x), wrapUnit(radicalInverseBase(s, 5) + turn.y)};
 }
+
+// Where along a stretch of water sample s of pixel `pixel` takes the light
+// scattered there, in [0, 1): the base-7 radical inverse, turned by an offset
+// of the pixel's own (after the two of pixelRotation).
+float scatterSample(uint32_t s, size_t pixel) {
+  const uint32_t offset = hashPixel(hashPixel(hashPixel(uint32_t(pixel))));
+  return wrapUnit(radicalInverseBase(s, 7) + unitFloat(offset));
+}
+
+// The numbers one path of a pixel's sample makes its choices by: the point of
+// the sun's disc (the unit square's) its shadow rays aim at, and where along
+// each stretch of water it gathers the scattered light.
+struct PathSample {
+  glm::vec2 sun{0.0f};
+  float scatter = 0.5f;
+};
 
 enum class Material { Ground, PoolWalls, PoolFloor, Water, Box, Sphere };
 
@@ -84,7 +101,9 @@ class Tracer {
         skyImage_(std::move(skyImage)),
         ground_(groundParams(scene)),
         maxSpecular_(maxSpecular),
-        absorption_(scene.water.absorption),
+        extinction_(scene.water.absorption + scene.water.scattering),
+        scattering_(scene.water.scattering),
+        anisotropy_(scene.water.scatteringAnisotropy),
         ior_(scene.water.ior) {
     if (hasPool(scene)) {
       PoolModel pool = poolModel(scene);
@@ -118,8 +137,8 @@ class Tracer {
 
   // Radiance arriving at the camera at `origin` from direction -dir: a glass
   // sphere, if one is nearer than what radiance() meets, else that.
-  // `sun`: the point of the sun's disc (the unit square's) this path's shadow rays aim at.
-  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, glm::vec2 sun,
+  // `path`: the numbers this path's choices are made by.
+  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, PathSample path,
                            SurfacePoint* first) const {
     const scene::Sphere* glass = nullptr;
     float nearest = std::numeric_limits<float>::infinity();
@@ -135,60 +154,67 @@ class Tracer {
       if (!hit.hit() || hit.distance > nearest) {
         const glm::vec3 p = origin + nearest * dir;
         if (first) *first = {p, glm::normalize(p - glass->center)};
-        const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * nearest) : glm::vec3(1.0f);
-        return transmittance * glassRadiance(*glass, p, dir);
+        if (!inWater) return glassRadiance(*glass, p, dir);
+        return glm::exp(-extinction_ * nearest) * glassRadiance(*glass, p, dir) + inScatter(origin, dir, nearest, path);
       }
     }
-    return radiance(origin, dir, inWater, specular, sun, first);
+    return radiance(origin, dir, inWater, specular, path, first);
   }
 
-  // Radiance arriving at `origin` from direction -dir; `first` receives the first surface.
-  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, glm::vec2 sun,
+  // Radiance arriving at `origin` from direction -dir; `first` receives the
+  // first surface. Under the water: what the surface met sends, attenuated,
+  // and what the water on the way scatters towards `origin`.
+  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, PathSample path,
                      SurfacePoint* first) const {
     const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
     if (!hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
-    const glm::vec3 p = origin + hit.distance * dir;
-    const glm::vec3 transmittance = inWater ? glm::exp(-absorption_ * hit.distance) : glm::vec3(1.0f);
+    const glm::vec3 leaving = surfaceRadiance(origin + hit.distance * dir, dir, hit, specular, path, first);
+    if (!inWater) return leaving;
+    return glm::exp(-extinction_ * hit.distance) * leaving + inScatter(origin, dir, hit.distance, path);
+  }
+
+ private:
+  // Radiance leaving the surface `hit` at p towards -dir.
+  glm::vec3 surfaceRadiance(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, PathSample path,
+                            SurfacePoint* first) const {
     if (hit.sphere >= 0) {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return transmittance * glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, sun)), dir, n,
-                                    glm::vec2(sphere.specular, sphere.roughness));
+      return glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun)), dir, n,
+                    glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
       case Material::Ground: {
         const glm::vec3 n(0.0f, 1.0f, 0.0f);
         if (first) *first = {p, n};
-        return transmittance * shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, sunShare(p, sun));
+        return shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, sunShare(p, path.sun));
       }
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance *
-               glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, sun)), dir, n,
+        return glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun)), dir, n,
                       glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
-        return transmittance * shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, sun));
+        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun));
       }
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return transmittance * shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, sun));
+        return shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun));
       }
       case Material::Water:
-        return transmittance * water(p, dir, hit, specular, sun, first);
+        return water(p, dir, hit, specular, path, first);
       case Material::Sphere:
         break;
     }
     return glm::vec3(0.0f);
   }
 
- private:
   // Whether anything but the water's surface meets origin + s dir for s in (0, limit).
   bool blocked(glm::vec3 origin, glm::vec3 dir, float limit) const {
     float from = kSurfaceOffset;
@@ -222,6 +248,32 @@ class Tracer {
     return blocked(p + toSurface * inWater, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
   }
 
+  // What the water on origin + s dir, 0 < s < length, scatters towards
+  // origin: shared/water_scattering.h's model (the sun's and the sky's beams
+  // entering through the flat surface at the rest level), sampled at one
+  // point per path, not integrated in closed form, the sun's beam there
+  // passing a shadow ray (sunShare). The point is drawn with a density
+  // proportional to the mean extinction's attenuation along the segment.
+  glm::vec3 inScatter(glm::vec3 origin, glm::vec3 dir, float length, PathSample path) const {
+    if (!shader::waterScatters(glm::vec4(scattering_, 0.0f)) || !std::isfinite(length)) return glm::vec3(0.0f);
+    const float mean = (extinction_.x + extinction_.y + extinction_.z) / 3.0f;  // > 0: it scatters
+    const float reach = -std::expm1(-mean * length);                            // the share of [0, length) drawn from
+    const float s = -std::log1p(-path.scatter * reach) / mean;
+    const float density = mean * std::exp(-mean * s) / reach;
+    const glm::vec3 x = origin + s * dir;
+    const float depth = level_ - x.y;
+    glm::vec3 light = shader::sh9Irradiance(uniforms_.skySh, glm::vec3(0.0f, 1.0f, 0.0f)) *
+                      glm::exp(-extinction_ * depth) / (4.0f * glm::pi<float>());
+    const glm::vec3 toSun(uniforms_.sunDirection);
+    if (toSun.y > 0.0f) {
+      const glm::vec3 travel = glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+      const float mu = -travel.y;
+      light += shader::henyeyGreenstein(-glm::dot(travel, dir), anisotropy_) * glm::vec3(uniforms_.sunIrradiance) *
+               (toSun.y / mu) * glm::exp(-extinction_ * (depth / mu)) * sunShare(x, path.sun);
+    }
+    return scattering_ * light * glm::exp(-extinction_ * s) / density;
+  }
+
   glm::vec3 sky(glm::vec3 dir) const {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
@@ -248,7 +300,7 @@ class Tracer {
   }
 
   // Both branches at the surface, weighted by the exact Fresnel reflectance.
-  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, glm::vec2 sun,
+  glm::vec3 water(glm::vec3 p, glm::vec3 dir, const ReferenceHit& hit, uint32_t specular, PathSample path,
                   SurfacePoint* first) const {
     const scene::Mesh& mesh = tracedMeshes_[size_t(waterMesh_)];
     const uint32_t* corner = &mesh.indices[size_t(hit.triangle) * 3];
@@ -271,7 +323,7 @@ class Tracer {
     auto follow = [&](glm::vec3 d) {
       const bool below = glm::dot(d, up) < 0.0f;
       const glm::vec3 start = p + (below ? -kSurfaceOffset : kSurfaceOffset) * up;
-      return radiance(start, d, below, specular + 1, sun, nullptr);
+      return radiance(start, d, below, specular + 1, path, nullptr);
     };
     glm::vec3 result = reflectance * follow(glm::normalize(dir + 2.0f * cosI * n));
     if (reflectance < 1.0f) {
@@ -293,7 +345,9 @@ class Tracer {
   shader::PoolParams pool_{};
   std::vector<glm::vec4> floorVertices_;  // the floor mesh's normals and heights
   uint32_t maxSpecular_;
-  glm::vec3 absorption_;
+  glm::vec3 extinction_;  // absorption plus scattering, 1/m
+  glm::vec3 scattering_;  // 1/m
+  float anisotropy_;      // Henyey-Greenstein g
   float ior_;
   std::vector<scene::Mesh> tracedMeshes_;
   std::vector<Material> materials_;
@@ -319,7 +373,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
   const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
   const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
   // Camera rays start in the water when the camera is under the surface.
-  const bool cameraInWater = cameraMedium(scene, water).absorption.w > 0.0f;
+  const bool cameraInWater = cameraMedium(scene, water).extinction.w > 0.0f;
 
   RenderedFrame out;
   out.width = width;
@@ -348,12 +402,12 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const glm::vec2 point = pixelSamplePoint(s, options.samples);
         cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
-        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, sunSample(s, k), nullptr);
+        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, {sunSample(s, k), scatterSample(s, k)}, nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;
       cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
-      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, glm::vec2(0.0f),
+      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, PathSample{},
                             &first);  // no branches: the surface alone
       for (int c = 0; c < 3; ++c) {
         out.rgba[k * 4 + c] = color[c];

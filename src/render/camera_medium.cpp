@@ -3,12 +3,13 @@
 #include "gpu/commands.hpp"
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
+#include "shading/water_model.hpp"
 #include "shared/water_surface.h"
 
 namespace tp::render {
 
 CameraMedium::CameraMedium(const gpu::Context& ctx, FrameGraph& graph, bool water) {
-  const shader::CameraMedium air{glm::vec4(0.0f)};
+  const shader::CameraMedium air = cameraInAir();
   medium_ = gpu::createFilledBuffer(ctx, &air, sizeof(air),
                                     vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformBuffer,
                                     gpu::MemoryUse::Device, "camera medium");

@@ -12,7 +12,7 @@ namespace {
 
 // sphere.vert tessellates each sphere (GlassSphereParams begins with its
 // SphereParams); the back faces with the front ones culled, and the reverse.
-gpu::GraphicsPipelineDesc glassSide(const char* fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull) {
+gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull) {
   return {.vertexShader = "sphere.vert",
           .fragmentShader = fragmentShader,
           .pushSize = sizeof(shader::GlassSphereParams),
@@ -33,10 +33,11 @@ void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeli
 
 }  // namespace
 
-Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame)
+Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, bool scattering)
     : back_(gpu::createGraphicsPipeline(ctx,
                                         glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
-      front_(gpu::createGraphicsPipeline(ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack))) {
+      front_(gpu::createGraphicsPipeline(ctx, glassSide(fragmentVariant("glass.frag", {.scattering = scattering}),
+                                                        kHdrFormat, vk::CullModeFlagBits::eBack))) {
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
                                   "glass back faces");

@@ -17,7 +17,8 @@ constexpr vk::Format kGlassBackFormat = vk::Format::eR32G32B32A32Sfloat;  // out
 class Glass {
  public:
   // Makes the back faces' target and the depth buffer its draw tests against.
-  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame);
+  // `scattering`: the water scatters (the glass seen from under it gathers that).
+  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, bool scattering);
   // `spheres`: the glass spheres in view when the frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
                const std::vector<shader::GlassSphereParams>& spheres) const;

@@ -11,7 +11,8 @@ Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer)
     : params_(groundParams(scene)),
       pipeline_(gpu::createGraphicsPipeline(
           ctx,
-          opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), gbuffer, castsShadows(scene)))) {}
+          opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), {gbuffer, castsShadows(scene)}))) {
+}
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
   graph.pass(passes::kGround, [this, targets, in](PassBuilder& pass) {

@@ -7,11 +7,11 @@
 
 namespace tp::render {
 
-Objects::Objects(const gpu::Context& ctx, bool gbuffer, bool shadows)
+Objects::Objects(const gpu::Context& ctx, FragmentNeeds needs)
     : spheres_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), gbuffer, shadows))),
-      boxes_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), gbuffer, shadows))) {}
+          ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), needs))),
+      boxes_(
+          gpu::createGraphicsPipeline(ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), needs))) {}
 
 void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                       const ObjectsInView& inView) const {

@@ -19,7 +19,7 @@ struct ObjectsInView {
 class Objects {
  public:
   // `shadows`: the surfaces' shadows variant (shading/frame_uniforms.hpp's castsShadows).
-  Objects(const gpu::Context& ctx, bool gbuffer, bool shadows);
+  Objects(const gpu::Context& ctx, FragmentNeeds needs);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                const ObjectsInView& inView) const;
 

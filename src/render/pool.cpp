@@ -14,10 +14,12 @@
 namespace tp::render {
 
 Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
-    : walls_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, gbuffer, castsShadows(scene)))),
-      floor_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4),
-                                                             gbuffer, castsShadows(scene)))) {
+    : walls_(
+          gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0,
+                                                          {gbuffer, castsShadows(scene), hasWaterScattering(scene)}))),
+      floor_(
+          gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4),
+                                                          {gbuffer, castsShadows(scene), hasWaterScattering(scene)}))) {
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,

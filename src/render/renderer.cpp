@@ -66,7 +66,7 @@ struct Renderer::Resources {
     ground.declare(graph, surfaces, in);
     if (pool) pool->declare(graph, surfaces, in);
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
-      objects.emplace(ctx, gbuffer, castsShadows(scene));
+      objects.emplace(ctx, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)});
       objects->declare(graph, surfaces, in, opaqueInView);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -80,7 +80,7 @@ struct Renderer::Resources {
     // apparent-depth mode's copy (the water's rays do not meet glass), before
     // the water, which draws over what of it is under the surface.
     if (std::any_of(scene.spheres.begin(), scene.spheres.end(), scene::isGlass)) {
-      glass.emplace(ctx, graph, frame);
+      glass.emplace(ctx, graph, frame, hasWaterScattering(scene));
       glass->declare(graph, surfaces, in, glassInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
@@ -234,7 +234,7 @@ namespace {
 const scene::Scene& sameWater(const scene::Scene& previous, const scene::Scene& scene) {
   if (!sim::sameWaterMotion(scene.water, previous.water)) {
     throw std::invalid_argument(
-        "a renderer that goes on with the water needs the same water but for ior and absorption: "
+        "a renderer that goes on with the water needs the same water but for ior, absorption and scattering: "
         "other water settings need a new renderer (the water restarts)");
   }
   return scene;

@@ -79,20 +79,24 @@ void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingA
   cmd.endRendering();
 }
 
-std::string shadowVariant(const std::string& fragmentShader, bool shadows) {
-  return shadows ? fragmentShader : fragmentShader.substr(0, fragmentShader.rfind('.')) + ".no_shadows.frag";
+std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds needs) {
+  std::string name = fragmentShader.substr(0, fragmentShader.rfind('.'));
+  if (!needs.gbuffer) name += ".color_only";
+  if (!needs.shadows) name += ".no_shadows";
+  if (needs.scattering) name += ".scattering";
+  return name + ".frag";
 }
 
 gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
-                                         uint32_t pushSize, bool gbuffer, bool shadows) {
-  const std::string colorOnly = fragmentShader.substr(0, fragmentShader.rfind('.')) + ".color_only.frag";
-  return {.vertexShader = vertexShader,
-          .fragmentShader = shadowVariant(gbuffer ? fragmentShader : colorOnly, shadows),
-          .pushSize = pushSize,
-          .colorFormats = gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
-          .depthFormat = kDepthFormat,
-          .depthTest = true,
-          .depthWrite = true};
+                                         uint32_t pushSize, FragmentNeeds needs) {
+  return {
+      .vertexShader = vertexShader,
+      .fragmentShader = fragmentVariant(fragmentShader, needs),
+      .pushSize = pushSize,
+      .colorFormats = needs.gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
+      .depthFormat = kDepthFormat,
+      .depthTest = true,
+      .depthWrite = true};
 }
 
 }  // namespace tp::render

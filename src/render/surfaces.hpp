@@ -67,14 +67,25 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& targ
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
               const std::function<void()>& draw);
 
-// The variant of a fragment shader (NAME.frag) without the sun shadows' code
-// (NAME.no_shadows.frag) unless `shadows` (shading/frame_uniforms.hpp's castsShadows).
-std::string shadowVariant(const std::string& fragmentShader, bool shadows);
+// What a scene needs of a fragment shader, which picks its variant
+// (cmake/shaders.cmake): the G-buffer outputs, the sun shadows' code
+// (shading/frame_uniforms.hpp's castsShadows), the light scattered in the
+// water (shading/water_model.hpp's hasWaterScattering).
+struct FragmentNeeds {
+  bool gbuffer = true;
+  bool shadows = true;
+  bool scattering = false;
+};
+
+// The variant of a fragment shader NAME.frag: NAME, then .color_only
+// without the G-buffer, .no_shadows without shadows, .scattering with
+// scattering, then .frag.
+std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds needs);
 
 // A pipeline of an opaque surface: colour, the two G-buffer targets (or,
 // without them, the fragment shader's colour-only variant), depth; the
-// shadows' variant as shadowVariant gives it.
+// fragment shader's variant as fragmentVariant gives it.
 gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
-                                         uint32_t pushSize, bool gbuffer, bool shadows);
+                                         uint32_t pushSize, FragmentNeeds needs);
 
 }  // namespace tp::render

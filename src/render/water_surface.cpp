@@ -24,15 +24,20 @@ gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullM
 
 bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
 
+// The water's shaders have no G-buffer outputs and no colour-only variant.
+FragmentNeeds waterNeeds(const scene::Scene& scene) {
+  return {.shadows = castsShadows(scene), .scattering = hasWaterScattering(scene)};
+}
+
 }  // namespace
 
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
                            sim::GpuStepper& stepper, vk::Extent2D frame)
     : above_(gpu::createGraphicsPipeline(
-          ctx, waterSide(shadowVariant(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
-                                       castsShadows(scene)),
+          ctx, waterSide(fragmentVariant(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+                                         waterNeeds(scene)),
                          vk::CullModeFlagBits::eBack))),
-      below_(gpu::createGraphicsPipeline(ctx, waterSide(shadowVariant("water_surface_below.frag", castsShadows(scene)),
+      below_(gpu::createGraphicsPipeline(ctx, waterSide(fragmentVariant("water_surface_below.frag", waterNeeds(scene)),
                                                         vk::CullModeFlagBits::eFront))) {
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,

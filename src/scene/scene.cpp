@@ -148,6 +148,10 @@ void validateWater(const Scene& s) {
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
   requireRange(w.ior, 1.0f, 3.0f, "water.ior");
   requireNonNegative(w.absorption, "water.absorption");
+  requireNonNegative(w.scattering, "water.scattering");
+  // |g| = 1 is a delta: the phase function's peak is infinite.
+  requireRange(w.scatteringAnisotropy, -0.99f, 0.99f, "water.scattering_anisotropy");
+  requireRange(float(w.scatteringShadowPieces), 0.0f, 64.0f, "water.scattering_shadow_pieces");
 }
 
 // The pool, its terrain floor, and the water below its rim.

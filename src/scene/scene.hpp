@@ -169,6 +169,12 @@ struct Water {
   float frameTime = 1.0f / 30.0f;  // seconds of simulation per rendered frame
   float ior = 1.333f;
   glm::vec3 absorption{0.45f, 0.09f, 0.06f};  // 1/m, red absorbed most
+  // 1/m: light scattered once in the water (shared/water_scattering.h); 0: none, and no cost.
+  glm::vec3 scattering{0.0f};
+  float scatteringAnisotropy = 0.7f;  // Henyey-Greenstein g: forward scattering, as by particles
+  // The shafts in the scattered sun light: the path cut into this many
+  // pieces, each shadowed at its middle; 0: unshadowed (and cheaper).
+  unsigned scatteringShadowPieces = 4;
   std::vector<Drop> drops{{-0.8f, -0.5f, 0.35f, 0.05f}, {0.9f, 0.6f, 0.25f, -0.04f}, {0.2f, 1.2f, 0.2f, 0.03f}};
   bool operator==(const Water&) const = default;
 };

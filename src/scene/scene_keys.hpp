@@ -80,6 +80,9 @@ void visitWaterKeys(R& r, Water& x) {
   r.number("frame_time", x.frameTime);
   r.number("ior", x.ior);
   r.vec3("absorption", x.absorption);
+  r.vec3("scattering", x.scattering);
+  r.number("scattering_anisotropy", x.scatteringAnisotropy);
+  r.count("scattering_shadow_pieces", x.scatteringShadowPieces);
   r.objects("drops", x.drops, [](auto& d, scene::Drop& drop) {
     d.number("x", drop.x);
     d.number("z", drop.z);

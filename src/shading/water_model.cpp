@@ -4,6 +4,7 @@
 
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
+#include "shared/water_scattering.h"
 
 namespace tp::render {
 
@@ -52,8 +53,9 @@ shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene) {
   const scene::Water& w = scene.water;
   return shader::WaterSurfaceParams{
       .placement = {-0.5f * w.extent, w.level, -0.5f * w.extent, w.extent / float(w.grid)},
-      .absorption = glm::vec4(w.absorption, w.ior),
-      .grid = {w.grid, 0u, 0u, 0u},
+      .extinction = glm::vec4(w.absorption + w.scattering, w.ior),
+      .scattering = glm::vec4(w.scattering, w.scatteringAnisotropy),
+      .grid = {w.grid, w.scatteringShadowPieces, 0u, 0u},
   };
 }
 
@@ -130,8 +132,14 @@ bool cameraOverWater(const scene::Scene& scene) {
   return shader::overWaterSquare(waterSurfaceParams(scene), glm::vec2(c.x, c.z));
 }
 
+bool hasWaterScattering(const scene::Scene& scene) {
+  return scene.water.enabled && shader::waterScatters(glm::vec4(scene.water.scattering, 0.0f));
+}
+
+shader::CameraMedium cameraInAir() { return {glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f)}; }
+
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water) {
-  if (!water) return {glm::vec4(0.0f)};
+  if (!water) return cameraInAir();
   const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
   const glm::vec3 camera = scene.camera.position;
   const glm::vec4 quad = shader::gridQuadAt(p, glm::vec2(camera.x, camera.z));
@@ -139,7 +147,10 @@ shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterSta
   const uint32_t i = uint32_t(quad.x), j = uint32_t(quad.y);
   const glm::vec4 corners(u(i, j), u(i + 1, j), u(i, j + 1), u(i + 1, j + 1));
   const bool under = shader::underWaterSurface(p, camera, corners, glm::vec2(quad.z, quad.w));
-  return {under ? glm::vec4(glm::vec3(p.absorption), 1.0f) : glm::vec4(0.0f)};
+  if (!under) return cameraInAir();
+  return {.extinction = glm::vec4(glm::vec3(p.extinction), 1.0f),
+          .scattering = p.scattering,
+          .water = glm::vec4(p.placement.y, p.extinction.w, float(p.grid.y), 0.0f)};
 }
 
 }  // namespace tp::render

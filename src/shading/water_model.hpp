@@ -34,6 +34,11 @@ bool cameraOverWater(const scene::Scene& scene);
 // The medium around the camera given the water's state (none: air), as
 // camera_medium.comp decides it on the GPU.
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water);
+// Whether the scene's water scatters light (water.scattering above 0): its
+// shaders then hold the scattering's code (the TP_SCATTERING variants).
+bool hasWaterScattering(const scene::Scene& scene);
+// The medium of a camera in the air: nothing between it and what it sees.
+shader::CameraMedium cameraInAir();
 
 // The triangles a frame shows, in world space: the ground around the pool's
 // hole, the pool's walls and floor, the objects, and, given its state, the water

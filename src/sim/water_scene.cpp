@@ -83,6 +83,9 @@ bool sameWaterMotion(const scene::Water& a, const scene::Water& b) {
   scene::Water shading = a;
   shading.ior = b.ior;
   shading.absorption = b.absorption;
+  shading.scattering = b.scattering;
+  shading.scatteringAnisotropy = b.scatteringAnisotropy;
+  shading.scatteringShadowPieces = b.scatteringShadowPieces;
   return shading == b;
 }
 

@@ -39,8 +39,8 @@ WaterParams waterParams(const scene::Scene& scene);
 // `water` with the dynamics of `from`: its wave speed, damping, grid damping, boundary and
 // max slope, what a live renderer changes (Renderer::setWaterDynamics).
 scene::Water withDynamicsOf(scene::Water water, const scene::Water& from);
-// Whether two waters move alike, being equal but for their ior and
-// absorption (which only shade): a renderer can carry one's state on to the other.
+// Whether two waters move alike, being equal but for their ior,
+// absorption and scattering (which only shade): a renderer can carry one's state on to the other.
 bool sameWaterMotion(const scene::Water& a, const scene::Water& b);
 // World position to the simulation's frame, whose grid starts at the water square's corner.
 glm::vec3 worldToGrid(const scene::Water& water, glm::vec3 p);
