@@ -21,7 +21,8 @@ namespace {
 constexpr uint32_t kWidth = 160, kHeight = 90, kFrame = 10;
 constexpr uint32_t kRasterSamples = 16, kReferenceSamples = 64;
 
-// Without what the reference leaves out (AO, the caustics).
+// Without AO, which the reference leaves out, and the caustics, measured on
+// their own (caustics_reference_test.cpp).
 scene::Scene asTheReference(scene::Scene s) {
   s.ao.enabled = false;
   s.render.caustics = false;

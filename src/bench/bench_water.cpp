@@ -100,7 +100,7 @@ int runBenchWater(const BenchWaterOptions& o) {
   std::vector<Resolution> resolutions;
   for (const auto& r : o.resolutions) resolutions.push_back(parseResolution(r, "bench water"));
   scene::Scene base = loadScene(o.scene, scene::defaultScene());
-  base.render.caustics = false;  // the reference leaves them out
+  base.render.caustics = false;  // the refraction modes alone: the caustics are measured on their own
   if (!base.water.enabled) throw std::runtime_error("bench water: the scene has no water");
 
   GpuSession session(o.validate, o.device);
