@@ -19,7 +19,7 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
   const float caustic =
-      texture(caustics, causticsUv(pool, worldPosition.xz)).r * frameSunShare(worldPosition);
+      texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera +
                    viewInScatter(medium, worldPosition),

@@ -13,6 +13,7 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Pool { PoolParams pool; };
+layout(binding = 2) uniform sampler2D caustics;
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 layout(binding = 4) uniform sampler2D glossyMap;
 
@@ -21,7 +22,10 @@ void main() {
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n)) * frame.sampling.x;
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint, frameSunShare(worldPosition));
+  // Under the water the sun comes through the waves (the caustics texture).
+  const float caustic =
+      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);

@@ -93,15 +93,17 @@ vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
   const PoolHit hit = tracePool(pool, p, t);
   const ObjectHit object = castObjects(objects.count.zw, p, t, hit.distance);
   const float distance = object.distance > 0.0 ? object.distance : hit.distance;
-  // One sun share for what is met (the shader holds its code once).
-  const float sunShare = frameSunShare(p + distance * t);
+  // One sun share for what is met (the shader holds its code once), through
+  // the waves (the caustics texture at its light line).
+  const vec3 met = p + distance * t;
+  const float sunShare = frameSunShare(met) * texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r;
   vec3 radiance;
   if (object.distance > 0.0) {
     radiance = glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal, sunShare), t,
                               object.normal, object.material);
   } else if (hit.floor) {
     radiance = poolFloorRadiance(pool, frame, hit.position, hit.normal, hitFootprint(rd, t, hit.distance, hit.normal),
-                                 texture(caustics, causticsUv(pool, hit.position.xz)).r * sunShare);
+                                 sunShare);
   } else {
     radiance = glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0), sunShare), t,
                               hit.normal, pool.wallGloss.xy);

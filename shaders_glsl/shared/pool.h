@@ -20,6 +20,7 @@ struct PoolParams {
   vec4 brickAlbedo;   // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
   vec4 mortarAlbedo;  // rgb; w unused
   vec4 wallGloss;     // x: the walls' specular, y: their roughness (shared/glossy.h)
+  vec4 water;  // x: the water's rest level, y: its index of refraction (the caustics' light lines), z: their reach (pool_model's causticsReach); w unused
 };
 
 // Bricks' tones vary by up to this fraction, one tone per brick, so that
@@ -77,7 +78,7 @@ TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.b
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 176);
+static_assert(sizeof(tp::shader::PoolParams) == 192);
 #endif
 
 #endif

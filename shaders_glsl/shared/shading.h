@@ -62,7 +62,7 @@ TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
   return normalize(vec3(-dx, 2.0f * spacing, -dz));
 }
 
-// `caustic`: the sun's irradiance through the waves relative to the open sky
+// `caustic`: the sun's irradiance through the waves relative to flat water
 // (the caustics texture; 1 where caustics are off), times its disc's share
 // in view (sunVisibility).
 TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
@@ -70,8 +70,33 @@ TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 posi
   return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal, caustic);
 }
 
-// Where the caustics texture, which covers the pool's square, holds world xz.
-TP_INLINE vec2 causticsUv(PoolParams pool, vec2 xz) { return xz / (2.0f * pool.box.x) + 0.5f; }
+// The direction the caustics texture's light lines run in: the sun's,
+// refracted by flat water (downwards).
+TP_INLINE vec3 causticsLight(PoolParams pool, vec3 toSun) {
+  return refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / pool.water.y);
+}
+
+// The light line through world point p under the water: the xz where the
+// flat water's refracted sun line through p crosses the rest level. The
+// caustics texture is indexed by it over the pool's square, so the floor,
+// the walls and the objects under the water read the light that reaches
+// them from one texture: under flat water each line carries its own light.
+TP_INLINE vec2 causticsLine(PoolParams pool, vec3 toSun, vec3 p) {
+  vec3 f = causticsLight(pool, toSun);
+  return vec2(p.x, p.z) + vec2(f.x, f.z) * ((pool.water.x - p.y) / min(f.y, -1e-6f));
+}
+
+// Where the caustics texture holds the light reaching world point p: its
+// light line, kept within the lines the texture holds whole (pool.water.z).
+TP_INLINE vec2 causticsUv(PoolParams pool, vec3 toSun, vec3 p) {
+  vec2 line = clamp(causticsLine(pool, toSun, p), vec2(-pool.water.z), vec2(pool.water.z));
+  return line / (2.0f * pool.box.x) + 0.5f;
+}
+
+// Whether the caustics reach p: under the water's rest level, inside the pool.
+TP_INLINE bool causticsReach(PoolParams pool, vec3 p) {
+  return p.y < pool.water.x && max(abs(p.x), abs(p.z)) <= pool.box.x;
+}
 
 // The walls see the sky above the horizon on their side (half of it, for a
 // uniform sky); the pool's own rim is not counted. `footprint`: the pixel's

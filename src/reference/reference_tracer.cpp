@@ -136,9 +136,13 @@ class Tracer {
     for (const scene::Sphere& sphere : placed.spheres) (scene::isGlass(sphere) ? glass_ : spheres_).push_back(sphere);
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
     if (water && scene.render.caustics) {
-      const auto floor = std::find(materials_.begin(), materials_.end(), Material::PoolFloor) - materials_.begin();
-      caustics_ = traceCaustics(scene, traced.at(size_t(waterMesh_)), waterNormals_, traced.at(size_t(floor)),
-                                kReferenceCausticsSize);
+      CausticReceivers receivers{{}, spheres_};
+      for (size_t m = 0; m < traced.size(); ++m) {
+        if (materials_[m] == Material::PoolFloor || materials_[m] == Material::PoolWalls ||
+            materials_[m] == Material::Box)
+          receivers.meshes.push_back(traced[m]);
+      }
+      caustics_ = traceCaustics(scene, traced.at(size_t(waterMesh_)), waterNormals_, receivers, kReferenceCausticsSize);
     }
     bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
     tracedMeshes_ = std::move(traced);
@@ -190,7 +194,7 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun)), dir, n,
+      return glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun) * focus(p)), dir, n,
                     glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
@@ -203,19 +207,19 @@ class Tracer {
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun)), dir, n,
-                      glm::vec2(pool_.wallGloss));
+        return glossy(
+            shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p)), dir, n,
+            glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
-        const float focus = caustics_ ? caustics_->at(xz) : 1.0f;
-        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus);
+        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p));
       }
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun));
+        return shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun) * focus(p));
       }
       case Material::Water:
         return water(p, dir, hit, specular, path, first);
@@ -282,6 +286,14 @@ class Tracer {
                (toSun.y / mu) * glm::exp(-extinction_ * (depth / mu)) * sunShare(x, path.sun);
     }
     return scattering_ * light * glm::exp(-extinction_ * s) / density;
+  }
+
+  // The sun's irradiance at p through the waves relative to flat water: the
+  // light-traced caustics on p's light line, under the water in the pool; 1
+  // elsewhere or without caustics.
+  float focus(glm::vec3 p) const {
+    if (!caustics_ || !shader::causticsReach(pool_, p)) return 1.0f;
+    return caustics_->at(shader::causticsLine(pool_, glm::vec3(uniforms_.sunDirection), p));
   }
 
   glm::vec3 sky(glm::vec3 dir) const {

@@ -12,8 +12,7 @@
 namespace tp::render {
 
 constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
-constexpr uint32_t kCausticsSize = 512;  // texels per side of the caustics texture over the pool
-constexpr uint32_t kWallVertices = 24;   // pool_walls.vert: four quads
+constexpr uint32_t kWallVertices = 24;                                   // pool_walls.vert: four quads
 
 // What other passes need of the pool: its uniforms, the spheres the water's
 // rays can meet, the floor grid and its vertices, and the caustics (the caustics pass's

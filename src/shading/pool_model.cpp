@@ -12,6 +12,11 @@ glm::vec2 poolFloorVertexXz(const shader::PoolParams& pool, uint32_t i, uint32_t
   return (uv * 2.0f - 1.0f) * pool.box.x;
 }
 
+float causticsReach(const scene::Scene& scene, uint32_t texels) {
+  const float half = 0.5f * scene.water.extent;
+  return half - 0.5f * scene.water.extent / float(scene.water.grid) - half / float(texels);
+}
+
 PoolModel poolModel(const scene::Scene& scene) {
   const scene::Pool& p = scene.pool;
   const scene::Terrain& t = scene.terrain;
@@ -29,6 +34,7 @@ PoolModel poolModel(const scene::Scene& scene) {
       .brickAlbedo = glm::vec4(p.brickAlbedo, p.dirt),
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
       .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
+      .water = {scene.water.level, scene.water.ior, causticsReach(scene, kCausticsSize), 0.0f},
   };
   std::vector<glm::vec4> vertices;
   vertices.reserve(size_t(kPoolFloorGrid) * kPoolFloorGrid);

@@ -9,6 +9,8 @@ namespace tp::render {
 // Vertices per side of the floor's grid mesh: drawn, intersected by the
 // water's refracted rays (shared/pool_trace.h) and by the reference tracer.
 inline constexpr uint32_t kPoolFloorGrid = 129;
+// Texels per side of the raster's caustics texture over the pool.
+inline constexpr uint32_t kCausticsSize = 512;
 
 // The pool exists when the scene has water: it holds it.
 inline bool hasPool(const scene::Scene& scene) { return scene.water.enabled; }
@@ -27,6 +29,14 @@ struct PoolModel {
 PoolModel poolModel(const scene::Scene& scene);
 // Its parameters alone.
 shader::PoolParams poolParams(const scene::Scene& scene);
+
+// How far from the pool's centre, in x and in z, a caustics map of `texels`
+// a side holds light lines read whole: the water's mesh spans the grid's
+// cell centres, half a cell short of the walls, so the lines past it carry
+// no light; and half a texel in, so a bilinear read does not reach them.
+// The lines beyond are read as the nearest within (the water reaches the
+// walls; its mesh does not).
+float causticsReach(const scene::Scene& scene, uint32_t texels);
 
 // Where floor vertex (i, j) lies in xz.
 glm::vec2 poolFloorVertexXz(const shader::PoolParams& pool, uint32_t i, uint32_t j);
