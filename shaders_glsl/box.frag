@@ -12,12 +12,16 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Medium { CameraMedium medium; };
+layout(binding = 3) uniform Pool { PoolParams pool; };
+layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
 layout(push_constant) uniform Push { BoxParams params; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition)) * toCamera +
+  const float caustic =
+      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
   writeGbuffer(frame, n, objectRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0) * toCamera);

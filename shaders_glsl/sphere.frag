@@ -15,13 +15,17 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(binding = 2) uniform sampler2D glossyMap;
+layout(binding = 3) uniform Pool { PoolParams pool; };
+layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
 layout(push_constant) uniform Push { SphereParams params; };
 
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const vec3 diffuse = objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition));
+  const float caustic =
+      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  const vec3 diffuse = objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);

@@ -15,6 +15,7 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/sky_model.hpp"
 #include "shading/water_model.hpp"
+#include "shared/objects.h"
 #include "sim/water_scene.hpp"
 #include "sim/water_state.hpp"
 
@@ -127,15 +128,26 @@ TEST_F(CausticsReferenceGpuTest, RasterCausticsMatchTheLightTracedOnes) {
   corner.camera.fovYDegrees = 60.0f;
   corner.boxes = {{.center = {-1.0f, -0.95f, -0.5f}, .size = {0.5f, 0.5f, 0.5f}}};
   corner.spheres = {{.center = {-0.4f, -0.85f, -1.3f}, .radius = 0.3f}};
+  // From under the surface, as scenes/underwater.json: the floor, the walls,
+  // a box and a sphere seen directly through the water.
+  scene::Scene under = corner;
+  under.camera.position = {-1.4f, -0.75f, 1.5f};
+  under.camera.target = {0.9f, -0.2f, -0.7f};
+  under.camera.fovYDegrees = 70.0f;
+  under.spheres = {{.center = {0.6f, -0.8f, -0.6f}, .radius = 0.35f}};
+  under.boxes = {{.center = {-0.6f, -0.9f, -1.0f}, .size = {0.6f, 0.6f, 0.6f}, .yawDegrees = 30.0f}};
   struct Case {
     const char* name;
     scene::Scene scene;
     double bound;
   };
   for (const Case& c : {Case{"from above, over the terrain", terrain, 0.04}, Case{"from above, flat floor", flat, 0.04},
-                        Case{"from a corner: floor, walls, box, sphere", corner, 0.1}}) {
+                        Case{"from a corner: floor, walls, box, sphere", corner, 0.1},
+                        Case{"from under the surface: floor, walls, box, sphere", under, 0.1}}) {
     const sim::WaterState water = sim::simulateWater(ctx(), c.scene, kFrame);
-    // The pixels whose centre's ray meets the water's rest level inside the pool.
+    // The pixels whose centre's ray meets the water's rest level inside the
+    // pool, or all of them from under the surface.
+    const bool cameraUnder = c.scene.camera.position.y < c.scene.water.level;
     const shader::FrameUniforms u = render::frameUniforms(c.scene, kWidth, kHeight);
     std::vector<bool> pool(size_t(kWidth) * kHeight);
     for (uint32_t y = 0; y < kHeight; ++y) {
@@ -146,16 +158,32 @@ TEST_F(CausticsReferenceGpuTest, RasterCausticsMatchTheLightTracedOnes) {
         const glm::vec3 o = glm::vec3(near) / near.w, d = glm::normalize(o - c.scene.camera.position);
         const glm::vec3 at = o + d * ((c.scene.water.level - o.y) / d.y);
         pool[size_t(y) * kWidth + x] =
-            d.y < 0.0f && std::max(std::abs(at.x), std::abs(at.z)) < 0.5f * c.scene.water.extent;
+            cameraUnder || (d.y < 0.0f && std::max(std::abs(at.x), std::abs(at.z)) < 0.5f * c.scene.water.extent);
       }
     }
+    // The pixels whose first surface, seen directly, is the sphere or the box
+    // (the reference's position AOV): from under the surface, what the
+    // objects' own pass draws.
+    std::vector<bool> object(size_t(kWidth) * kHeight);
     auto ratios = [&](bool reference) {
       scene::Scene on = c.scene, off = c.scene;
       on.render.caustics = true;
       off.render.caustics = false;
       std::vector<float> a, b;
       if (reference) {
-        a = render::renderReference(on, &water, kFrame, kWidth, kHeight, {.samples = 16}).rgba;
+        const render::RenderedFrame frame =
+            render::renderReference(on, &water, kFrame, kWidth, kHeight, {.samples = 16});
+        a = frame.rgba;
+        for (size_t p = 0; p < object.size(); ++p) {
+          const glm::vec3 at(frame.position[p * 4], frame.position[p * 4 + 1], frame.position[p * 4 + 2]);
+          for (const auto& s : c.scene.spheres) object[p] = object[p] || glm::distance(at, s.center) < s.radius + 1e-3f;
+          for (const auto& box : c.scene.boxes) {
+            const float yaw = glm::radians(box.yawDegrees);
+            const glm::vec3 rel = at - box.center;
+            const glm::vec3 local(glm::dot(rel, shader::boxAxisX(yaw)), rel.y, glm::dot(rel, shader::boxAxisZ(yaw)));
+            object[p] = object[p] || glm::all(glm::lessThan(glm::abs(local), 0.5f * box.size + 1e-3f));
+          }
+        }
         b = render::renderReference(off, &water, kFrame, kWidth, kHeight, {.samples = 16}).rgba;
       } else {
         render::Renderer ra(ctx(), on, kWidth, kHeight), rb(ctx(), off, kWidth, kHeight);
@@ -180,6 +208,19 @@ TEST_F(CausticsReferenceGpuTest, RasterCausticsMatchTheLightTracedOnes) {
     const double rmse = std::sqrt(diff / double(n));
     std::printf("caustics ratio %s, %zu pixels: raster mean %.4f, light-traced mean %.4f, RMSE %.4f\n", c.name, n,
                 meanRaster / double(n), meanReference / double(n), rmse);
+    if (cameraUnder) {
+      double objectDiff = 0.0;
+      size_t objectPixels = 0;
+      for (size_t p = 0; p < raster.size(); ++p) {
+        if (!object[p] || raster[p] < 0.0f || reference[p] < 0.0f) continue;
+        objectDiff += (raster[p] - reference[p]) * (raster[p] - reference[p]);
+        ++objectPixels;
+      }
+      const double objectRmse = std::sqrt(objectDiff / double(objectPixels));
+      std::printf("  on the %zu pixels of the objects seen directly: RMSE %.4f\n", objectPixels, objectRmse);
+      EXPECT_GT(objectPixels, size_t(kWidth * kHeight / 50));
+      EXPECT_LT(objectRmse, c.bound);
+    }
     EXPECT_GT(n, size_t(kWidth * kHeight / 4)) << c.name;
     EXPECT_NEAR(meanRaster / double(n), meanReference / double(n), 0.02) << c.name;
     EXPECT_LT(rmse, c.bound) << c.name;

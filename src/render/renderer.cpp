@@ -66,7 +66,8 @@ struct Renderer::Resources {
     ground.declare(graph, surfaces, in);
     if (pool) pool->declare(graph, surfaces, in);
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
-      objects.emplace(ctx, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)});
+      objects.emplace(ctx, graph, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)},
+                      pool ? &pool->draw() : nullptr);
       objects->declare(graph, surfaces, in, opaqueInView);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
