@@ -3,6 +3,7 @@
 // A Lambertian box (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/objects.h"
+#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
@@ -19,8 +20,7 @@ layout(push_constant) uniform Push { BoxParams params; };
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  const float caustic =
-      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);

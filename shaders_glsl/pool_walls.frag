@@ -3,6 +3,7 @@
 // The pool's walls (plain or brick, shared/pool.h), Lambertian (shared/shading.h)
 // with their glossy lobe (shared/glossy.h), through the water when the camera is under it.
 #include "shared/shading.h"
+#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/glossy_lookup.glsl"
 
@@ -23,8 +24,7 @@ void main() {
   const vec2 footprint = fwidth(poolWallCoordinates(pool, worldPosition, n)) * frame.sampling.x;
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   // Under the water the sun comes through the waves (the caustics texture).
-  const float caustic =
-      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
                    viewInScatter(medium, worldPosition),

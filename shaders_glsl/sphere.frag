@@ -4,6 +4,7 @@
 // through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/objects.h"
+#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/glossy_lookup.glsl"
 
@@ -23,8 +24,7 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const float caustic =
-      causticsReach(pool, worldPosition) ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r : 1.0;
+  const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   const vec3 diffuse = objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
