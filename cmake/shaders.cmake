@@ -31,13 +31,21 @@ foreach(surface pool_walls pool_floor sphere box)
     ${surface}.frag:TP_NO_SHADOWS+TP_SCATTERING:${surface}.no_shadows.scattering.frag
     ${surface}.frag:TP_COLOR_ONLY+TP_NO_SHADOWS+TP_SCATTERING:${surface}.color_only.no_shadows.scattering.frag)
 endforeach()
-foreach(water water_surface water_surface_apparent water_surface_below)
+foreach(water water_surface water_surface_apparent water_surface_below glass)
   list(APPEND TIDEPOOL_SHADER_VARIANTS
     ${water}.frag:TP_NO_SHADOWS:${water}.no_shadows.frag
     ${water}.frag:TP_SCATTERING:${water}.scattering.frag
     ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING:${water}.no_shadows.scattering.frag)
 endforeach()
-list(APPEND TIDEPOOL_SHADER_VARIANTS glass.frag:TP_SCATTERING:glass.scattering.frag)
+# The water's rays meeting glass (lib/scene_rays.glsl's backdrop), for
+# scenes with glass spheres: the casts they add cost compile time.
+foreach(water water_surface water_surface_apparent water_surface_below)
+  list(APPEND TIDEPOOL_SHADER_VARIANTS
+    ${water}.frag:TP_GLASS:${water}.glass.frag
+    ${water}.frag:TP_NO_SHADOWS+TP_GLASS:${water}.no_shadows.glass.frag
+    ${water}.frag:TP_SCATTERING+TP_GLASS:${water}.scattering.glass.frag
+    ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${water}.no_shadows.scattering.glass.frag)
+endforeach()
 
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS

@@ -5,27 +5,20 @@
 // the exit point is found by a binary search along the refracted ray against
 // the back faces' view depth (glass_back.frag), the exit normal read there;
 // the ray is refracted out (or, under total internal reflection, reflected
-// back in and looked up as if it left) and looks up the sky. The exact
-// Fresnel reflectance of the front surface mixes in the reflected sky
-// (shared/glass.h has the model, which the CPU reference shares).
-#include "shared/equirect.h"
-#include "shared/frame.h"
-#include "shared/glass.h"
-#include "shared/shading.h"
+// back in and taken as if it left). The exact Fresnel reflectance of the
+// front surface mixes in the reflected ray. Both rays look up what they meet
+// by the analytic casts the water's rays use (lib/scene_rays.glsl): the
+// ground, the pool, its water as flat at its rest level, the objects, the
+// sky (shared/glass.h has the model, which the CPU reference shares).
+#include "lib/scene_rays.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
-layout(binding = 0) uniform Frame { FrameUniforms frame; };
-#include "shared/sun_shadow.h"  // reads `frame` in place
-#include "shared/water_scattering.h"  // reads `frame` in place
-layout(binding = 1) uniform sampler2D skyTexture;
 // xyz: outward normal of the nearest back face, w: its view depth (0: none).
 layout(binding = 2) uniform sampler2D backFaces;
-layout(binding = 3) uniform Medium { CameraMedium medium; };
+layout(binding = 5) uniform Medium { CameraMedium medium; };
 layout(push_constant) uniform Push { GlassSphereParams params; };
-
-vec3 sky(vec3 dir) { return texture(skyTexture, directionToEquirect(dir)).rgb; }
 
 // Whether world point p lies in front of the back face under it (inside the
 // glass, the exit not yet passed), with that back face's normal.
@@ -38,10 +31,23 @@ bool beforeBackFace(vec3 p, out vec3 backNormal) {
   return back.w > 0.0 && -(frame.view * vec4(p, 1.0)).z < back.w;
 }
 
+// The rays followed from one glass pixel, one after another: its two, and
+// two more at each split (the flat water, another glass sphere) while
+// there is room; past that, the part going into the air is looked up in
+// the sky and the rest left out.
+const int kGlassRays = 6;
+struct GlassRay {
+  vec3 origin, dir;
+  vec3 weight;  // its share of the pixel
+  bool water;   // it starts in the pool's water
+  uint skip;    // the glass sphere it leaves (castObjects)
+};
+
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const float ior = params.glass.x;
+  const uint self = params.search.y;
   const float reflectance = fresnelDielectric(max(-dot(view, n), 0.0), 1.0, ior);
   const vec3 inside = refract(view, n, 1.0 / ior);  // from air into glass: always refracts
   // The exit lies within the longest chord of the sphere, its diameter. The
@@ -61,8 +67,93 @@ void main() {
   }
   // No back face found at all (a sliver at the silhouette): straight through.
   const vec3 leaving = dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), ior) : inside;
-  const vec3 radiance = mix(sky(leaving), sky(reflect(view, n)), reflectance);
-  color = vec4(radiance * viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition) +
-                   viewInScatter(medium, worldPosition),
-               1.0);
+  const vec3 exitPoint = worldPosition + 0.5 * (before + after) * inside;
+  const vec3 reflected = reflect(view, n);
+  // The two rays' footprints, taken here where every lane of the quad runs.
+  const RayDifferential footprints[2] =
+      RayDifferential[](rayDifferential(exitPoint, leaving), rayDifferential(worldPosition, reflected));
+  GlassRay rays[kGlassRays];
+  rays[0] = GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self);
+  rays[1] = GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self);
+  int count = 2;
+  vec3 radiance = vec3(0.0);
+  TP_DONT_UNROLL for (int k = 0; k < kGlassRays; ++k) {
+    if (k >= count) break;
+    const GlassRay ray = rays[k];
+    // What the ray meets of the pool, the water's surface and the ground,
+    // then whether an object is nearer.
+    float up = -1.0, limit;
+    PoolHit poolMet = poolHit(1e30, vec3(0.0), vec3(0.0, 1.0, 0.0), false);
+    AirHit airMet = AirHit(1e30, kMetNothing, vec3(0.0, 1.0, 0.0));
+    if (ray.water) {
+      up = toSurfaceFromBelow(ray.origin, ray.dir);
+      if (up <= 0.0) poolMet = tracePool(pool, ray.origin, ray.dir);
+      limit = up > 0.0 ? up : poolMet.distance;
+    } else {
+      airMet = airSurface(ray.origin, ray.dir);
+      limit = airMet.distance;
+    }
+    const ObjectHit object =
+        castObjects(ray.water ? objects.count.zw : objects.count.xy, ray.origin, ray.dir, limit, ray.skip);
+    const bool onObject = object.distance > 0.0;
+    const float distance = onObject ? object.distance : limit;
+    const vec3 met = ray.origin + distance * ray.dir;
+    vec3 weight = ray.weight;
+    if (ray.water) {
+      radiance += weight * inScatter(ray.origin, ray.dir, distance);
+      weight *= exp(-pool.extinction.rgb * distance);
+    }
+    const bool room = count + 2 <= kGlassRays;
+    if (onObject && object.glass > 0.0) {
+      // Another glass sphere: its two exact paths.
+      const GlassPaths g = glassSpherePaths(ray.dir, object.normal, object.glass);
+      if (!room) {
+        radiance += weight * mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+        continue;
+      }
+      const vec3 exit = met + g.chord * objects.spheres[object.sphere].w * g.inside;
+      rays[count++] = GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere);
+      rays[count++] = GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere);
+      continue;
+    }
+    if (!onObject && (up > 0.0 || airMet.met == kMetWater)) {
+      // The flat water: its reflection and its refraction.
+      const vec3 facing = vec3(0.0, ray.water ? -1.0 : 1.0, 0.0);
+      const float reflectance = flatWaterReflectance(ray.dir, ray.water);
+      const vec3 through = refract(ray.dir, facing, ray.water ? pool.water.y : 1.0 / pool.water.y);
+      const vec3 back = reflect(ray.dir, facing);
+      if (!room) {
+        radiance += weight * (ray.water ? (1.0 - reflectance) * sky(through) : reflectance * sky(back));
+        continue;
+      }
+      if (reflectance < 1.0) rays[count++] = GlassRay(met, through, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere);
+      rays[count++] = GlassRay(met, back, weight * reflectance, ray.water, kSkipNoSphere);
+      continue;
+    }
+    if (!onObject && !ray.water && airMet.met == kMetNothing) {
+      radiance += weight * sky(ray.dir);
+      continue;
+    }
+    // An opaque surface: one sun share and one footprint for whichever.
+    const float sunShare =
+        frameSunShare(met) * (ray.water ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r : 1.0);
+    const vec3 surfaceNormal = ray.water ? poolMet.normal : airMet.normal;
+    const vec2 footprint = k < 2 ? hitFootprint(footprints[k], ray.dir, distance, surfaceNormal) : vec2(0.0);
+    vec3 seen;
+    if (onObject) {
+      seen = objectSeen(object, met, ray.dir, sunShare);
+    } else if (ray.water) {
+      seen = poolSurfaceSeen(poolMet, ray.dir, footprint, sunShare);
+    } else {
+      seen = airSurfaceSeen(airMet, met, ray.dir, footprint, sunShare);
+    }
+    radiance += weight * seen;
+  }
+  // The water between the camera and the glass, when the camera is in it
+  // (the camera medium's water is the pool's). Not viewInScatter: its
+  // run-time guard, a loop, crashed lavapipe's rasterizer in this shader.
+  const vec3 camera = frame.cameraPosition.xyz;
+  const float toGlass = distance(camera, worldPosition);
+  const vec3 between = medium.extinction.w > 0.0 ? inScatter(camera, (worldPosition - camera) / toGlass, toGlass) : vec3(0.0);
+  color = vec4(radiance * viewTransmittance(medium, camera, worldPosition) + between, 1.0);
 }

@@ -111,6 +111,14 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {},
        {}},
+      {"glass in the water and out of view",
+       [](scene::Scene& s, const std::string&) {
+         // The water's rays meet it (its shaders' glass variants); the other is behind the camera.
+         s.spheres.push_back({.center = {0.8f, s.water.level, 0.5f}, .radius = 0.3f, .material = "glass"});
+         s.spheres.push_back({.center = {8.0f, 0.5f, 12.0f}, .radius = 0.3f, .material = "glass", .ior = 1.33f});
+       },
+       {&render::passes::kCameraMedium},
+       {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};

@@ -10,8 +10,10 @@
 // the exit point, refracted out by the exit normal, with no Fresnel loss
 // there; where it cannot leave (total internal reflection) it takes the
 // internally reflected direction instead, once, as if it left that way. Both
-// directions that leave, the reflection and the exit ray, look up the sky
-// alone: the glass shows the environment, not the scene around it.
+// rays that leave, the reflection and the exit ray, look up the scene: the
+// raster by the analytic casts the water's rays use (lib/scene_rays.glsl),
+// the reference by tracing them. Where the raster cannot go on (glass seen
+// in the water's rays or through other glass) they look up the sky.
 #ifndef TP_SHARED_GLASS_H
 #define TP_SHARED_GLASS_H
 #include "shared/interop.h"
@@ -27,7 +29,8 @@ struct GlassSphereParams {
   vec4 albedo;         // unused (SphereParams' place)
   uvec4 tessellation;  // x: stacks, y: slices
   vec4 glass;          // x: index of refraction
-  uvec4 search;        // x: binary-search steps for the exit point (render.glass_search_steps)
+  uvec4 search;        // x: binary-search steps for the exit point (render.glass_search_steps);
+                       // y: its slot among SceneObjects' spheres, which its own rays pass by
 };
 
 // Unpolarised Fresnel reflectance of a dielectric interface for a ray meeting
@@ -50,6 +53,30 @@ TP_INLINE vec3 glassExitDirection(vec3 t, vec3 nOut, float ior) {
   vec3 leaving = refract(t, -nOut, ior);
   if (dot(leaving, leaving) == 0.0f) return reflect(t, -nOut);
   return normalize(leaving);
+}
+
+// The exact paths of a ray, direction dir (unit), meeting a glass sphere at a
+// point of outward normal n: its reflection, its refraction into the glass,
+// the chord it crosses and the ray that leaves at the chord's far end. With
+// the sphere's centre c and radius r, p - c = r n: the far end lies at
+// distance -2 r (n . t) along t, where the normal is n mirrored in the plane
+// normal to t. The raster's glass pass finds that end in image space instead.
+struct GlassPaths {
+  float reflectance;  // exact Fresnel at the front surface
+  vec3 reflected;
+  vec3 inside;
+  float chord;  // in radii: the exit point is p + chord r inside
+  vec3 leaving;
+};
+
+TP_INLINE GlassPaths glassSpherePaths(vec3 dir, vec3 n, float ior) {
+  GlassPaths g;
+  g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, ior);
+  g.reflected = reflect(dir, n);
+  g.inside = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
+  g.chord = -2.0f * dot(n, g.inside);
+  g.leaving = glassExitDirection(g.inside, n + g.chord * g.inside, ior);
+  return g;
 }
 
 // Whether the ray leaving through nOut is totally internally reflected.

@@ -21,8 +21,14 @@ struct ObjectHit {
   float distance;  // -1: none nearer than the limit
   vec3 normal;     // unit, world
   vec3 albedo;
-  vec2 material;   // x: specular, y: roughness; boxes have none
+  vec2 material;  // x: specular, y: roughness; boxes have none
+  float glass;    // a glass sphere's index of refraction; 0: not glass
+  uint sphere;    // the sphere's slot among the objects; kSkipNoSphere for a box
 };
+
+// castObjects' `skip` when no sphere is to be passed by; ObjectHit's
+// `sphere` when the hit is a box or nothing.
+const uint kSkipNoSphere = 0xffffffffu;
 
 // How far along its ray a sphere is met by a ray that starts inside it: at
 // once. The water's surface passes through a sphere at its waterline, and the
@@ -33,14 +39,19 @@ const float kInsideSphereHit = 1e-6f;
 // The nearest sphere or box along origin + s dir (dir unit) with s < limit,
 // among the first `counts` (x spheres, y boxes): count.xy for every object,
 // count.zw for those below the rim, which alone rays under the water can meet.
-TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3 dir, float limit) {
+// Sphere `skip` is passed by: the glass sphere a ray leaves (its origin lies
+// on that sphere, where round-off could put it inside).
+TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3 dir, float limit, uint skip) {
   ObjectHit hit;
   hit.distance = -1.0f;
   hit.normal = vec3(0.0f);
   hit.albedo = vec3(0.0f);
   hit.material = vec2(0.0f);
+  hit.glass = 0.0f;
+  hit.sphere = kSkipNoSphere;
   float nearest = limit;
   for (uint i = 0u; i < counts.x; ++i) {
+    if (i == skip) continue;
     vec3 fromCentre = origin - vec3(objects.spheres[i]);
     float s = dot(fromCentre, fromCentre) < objects.spheres[i].w * objects.spheres[i].w
                   ? kInsideSphereHit
@@ -51,6 +62,8 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
       hit.normal = normalize(origin + s * dir - vec3(objects.spheres[i]));
       hit.albedo = vec3(objects.sphereAlbedo[i]);
       hit.material = vec2(objects.sphereMaterial[i]);
+      hit.glass = objects.sphereMaterial[i].z;
+      hit.sphere = i;
     }
   }
   for (uint i = 0u; i < counts.y; ++i) {
@@ -61,6 +74,8 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
       hit.normal = vec3(b.y, b.z, b.w);
       hit.albedo = vec3(objects.boxAlbedo[i]);
       hit.material = vec2(0.0f);
+      hit.glass = 0.0f;
+      hit.sphere = kSkipNoSphere;
     }
   }
   return hit;

@@ -11,16 +11,21 @@
 TP_BEGIN
 
 struct PoolParams {
-  vec4 box;         // x: half size of the square pool, y: rim height, z: mean floor depth below the rim, w: terrain amplitude
-  vec4 terrain;     // x: terrain frequency (1/m), y: persistence, z: lowest floor vertex, w: highest (metres)
-  uvec4 noise;      // x: octaves, y: seed, z: the floor mesh's vertices per side; w unused
-  vec4 wallAlbedo;  // rgb: of plain walls; w: 1 for brick walls, 0 for plain
+  vec4 box;  // x: half size of the square pool, y: rim height, z: mean floor depth below the rim, w: terrain amplitude
+  vec4 terrain;        // x: terrain frequency (1/m), y: persistence, z: lowest floor vertex, w: highest (metres)
+  uvec4 noise;         // x: octaves, y: seed, z: the floor mesh's vertices per side; w unused
+  vec4 wallAlbedo;     // rgb: of plain walls; w: 1 for brick walls, 0 for plain
   GroundParams tiles;  // the floor's checker: plane.z tile size, albedoA, albedoB
-  vec4 brick;         // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights
-  vec4 brickAlbedo;   // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
-  vec4 mortarAlbedo;  // rgb; w unused
-  vec4 wallGloss;     // x: the walls' specular, y: their roughness (shared/glossy.h)
-  vec4 water;  // x: the water's rest level, y: its index of refraction (the caustics' light lines), z: their reach (pool_model's causticsReach); w unused
+  vec4 brick;          // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights
+  vec4 brickAlbedo;    // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
+  vec4 mortarAlbedo;   // rgb; w unused
+  vec4 wallGloss;      // x: the walls' specular, y: their roughness (shared/glossy.h)
+  vec4 water;  // x: the water's rest level, y: its index of refraction (the caustics' light lines), z: their reach
+               // (pool_model's causticsReach); w unused
+  // The water's medium for rays that carry no WaterSurfaceParams (the glass's):
+  vec4 extinction;      // rgb: absorption plus scattering, 1/m; w: the scattered sun's shadow pieces
+  vec4 scattering;      // rgb: 1/m; w: the phase's anisotropy (water_scattering.h)
+  GroundParams ground;  // the ground around the pool, for rays cast in shaders (the glass's)
 };
 
 // Bricks' tones vary by up to this fraction, one tone per brick, so that
@@ -65,8 +70,8 @@ TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
   TP_PRECISE float tone = 1.0f - kBrickToneVariation * latticeValue(int(cell.x), int(cell.y), kBrickDirtSeed);
   TP_PRECISE vec3 mortar = vec3(p.mortarAlbedo);
   TP_PRECISE vec3 brick = vec3(p.brickAlbedo) * tone;
-  TP_PRECISE float dirtNoise =
-      fractalNoise01(TP_NOISE_GRADIENT, wall * kBrickDirtFrequency, kBrickDirtSeed, kBrickDirtOctaves, kBrickDirtPersistence);
+  TP_PRECISE float dirtNoise = fractalNoise01(TP_NOISE_GRADIENT, wall * kBrickDirtFrequency, kBrickDirtSeed,
+                                              kBrickDirtOctaves, kBrickDirtPersistence);
   TP_PRECISE float clean = 1.0f - p.brickAlbedo.w * dirtNoise;
   TP_PRECISE vec3 albedo = (mortar + (brick - mortar) * onBrick) * clean;
   return albedo;
@@ -78,7 +83,7 @@ TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.b
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 192);
+static_assert(sizeof(tp::shader::PoolParams) == 272);
 #endif
 
 #endif

@@ -81,8 +81,8 @@ FloorErrors floorErrors(const scene::Scene& s, const render::RenderedFrame& aov,
     const glm::vec2 truePixel = shader::screenPixel(u, p + truth.distance * t);
 
     const shader::PoolHit cast = shader::tracePool(pool, p, t, poolModel.floorVertices.data());
-    const shader::ObjectHit object =
-        shader::castObjects(objects, glm::uvec2(objects.count.z, objects.count.w), p, t, cast.distance);
+    const shader::ObjectHit object = shader::castObjects(objects, glm::uvec2(objects.count.z, objects.count.w), p, t,
+                                                         cast.distance, shader::kSkipNoSphere);
     const float distance = object.distance > 0.0f ? object.distance : cast.distance;
     accurate += glm::length(shader::screenPixel(u, p + distance * t) - truePixel);
 

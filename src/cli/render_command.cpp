@@ -124,8 +124,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->capture_default_str()
       ->check(CLI::IsMember(io::exrCompressions()));
   cmd->add_flag("--reference", o.reference,
-                "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction and Fresnel, no "
-                "caustics): the ground truth for error figures; slow")
+                "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction, Fresnel and "
+                "glass, the caustics traced from the sun): the ground truth for error figures; slow")
       ->excludes(profile)
       ->excludes(frames);
   profile->excludes(frames);

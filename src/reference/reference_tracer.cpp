@@ -131,8 +131,6 @@ class Tracer {
       if (m == Material::Water) waterMesh_ = int(traced.size());
       traced.push_back(std::move(mesh));
     }
-    // Glass spheres are seen from the camera alone (cameraRadiance); the
-    // other rays pass them by, as the raster's water does.
     for (const scene::Sphere& sphere : placed.spheres) (scene::isGlass(sphere) ? glass_ : spheres_).push_back(sphere);
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
     if (water && scene.render.caustics) {
@@ -148,42 +146,28 @@ class Tracer {
     tracedMeshes_ = std::move(traced);
   }
 
-  // Radiance arriving at the camera at `origin` from direction -dir: a glass
-  // sphere, if one is nearer than what radiance() meets, else that.
-  // `path`: the numbers this path's choices are made by.
-  glm::vec3 cameraRadiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, PathSample path,
-                           SurfacePoint* first) const {
+  // Radiance arriving at `origin` from direction -dir; `first` receives the
+  // first surface. Under the water: what the surface met sends, attenuated,
+  // and what the water on the way scatters towards `origin`. `skip`: the
+  // glass sphere the ray leaves, which it does not meet again.
+  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, PathSample path,
+                     SurfacePoint* first, const scene::Sphere* skip = nullptr) const {
+    const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
+    float distance = hit.hit() ? hit.distance : std::numeric_limits<float>::infinity();
     const scene::Sphere* glass = nullptr;
-    float nearest = std::numeric_limits<float>::infinity();
     for (const scene::Sphere& sphere : glass_) {
       const float s = shader::raySphere(origin, dir, glm::vec4(sphere.center, sphere.radius));
-      if (s > 0.0f && s < nearest) {
-        nearest = s;
+      if (&sphere != skip && s > 0.0f && s < distance) {
+        distance = s;
         glass = &sphere;
       }
     }
-    if (glass) {
-      const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
-      if (!hit.hit() || hit.distance > nearest) {
-        const glm::vec3 p = origin + nearest * dir;
-        if (first) *first = {p, glm::normalize(p - glass->center)};
-        if (!inWater) return glassRadiance(*glass, p, dir);
-        return glm::exp(-extinction_ * nearest) * glassRadiance(*glass, p, dir) + inScatter(origin, dir, nearest, path);
-      }
-    }
-    return radiance(origin, dir, inWater, specular, path, first);
-  }
-
-  // Radiance arriving at `origin` from direction -dir; `first` receives the
-  // first surface. Under the water: what the surface met sends, attenuated,
-  // and what the water on the way scatters towards `origin`.
-  glm::vec3 radiance(glm::vec3 origin, glm::vec3 dir, bool inWater, uint32_t specular, PathSample path,
-                     SurfacePoint* first) const {
-    const ReferenceHit hit = bvh_->intersect(origin, dir, 0.0f);
-    if (!hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
-    const glm::vec3 leaving = surfaceRadiance(origin + hit.distance * dir, dir, hit, specular, path, first);
+    if (!glass && !hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
+    const glm::vec3 p = origin + distance * dir;
+    const glm::vec3 leaving = glass ? glassRadiance(*glass, p, dir, specular, path, first)
+                                    : surfaceRadiance(p, dir, hit, specular, path, first);
     if (!inWater) return leaving;
-    return glm::exp(-extinction_ * hit.distance) * leaving + inScatter(origin, dir, hit.distance, path);
+    return glm::exp(-extinction_ * distance) * leaving + inScatter(origin, dir, distance, path);
   }
 
  private:
@@ -254,8 +238,7 @@ class Tracer {
     const glm::vec3 dir =
         glm::normalize(std::cos(r) * toSun + std::sin(r) * (std::cos(angle) * side + std::sin(angle) * up));
     if (dir.y <= 0.0f) return 0.0f;
-    const bool underWater = waterMesh_ >= 0 && p.y < level_ && std::max(std::abs(p.x), std::abs(p.z)) <= poolHalf_;
-    if (!underWater) return blocked(p, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
+    if (!inPoolWater(p)) return blocked(p, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
     const glm::vec3 inWater = -glm::refract(-dir, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
     const float toSurface = (level_ - p.y) / inWater.y;
     if (blocked(p, inWater, toSurface)) return 0.0f;
@@ -300,16 +283,26 @@ class Tracer {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
 
-  // The glass model of shared/glass.h with the exact exit point: the chord of
-  // the sphere from p along the refracted ray, its far end at distance
-  // -2 (p - c).t (p on the sphere).
-  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir) const {
+  // The glass model of shared/glass.h with the exact exit point: the
+  // reflected ray and the ray leaving the chord's far end traced on, in the
+  // water where they start under its rest level in the pool. Past the
+  // specular depth they look up the sky, as the raster's deepest rays do.
+  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir, uint32_t specular, PathSample path,
+                          SurfacePoint* first) const {
     const glm::vec3 n = glm::normalize(p - glass.center);
-    const float reflectance = shader::fresnelDielectric(std::max(-glm::dot(dir, n), 0.0f), 1.0f, glass.ior);
-    const glm::vec3 inside = glm::refract(dir, n, 1.0f / glass.ior);
-    const glm::vec3 exit = p - 2.0f * glm::dot(p - glass.center, inside) * inside;
-    const glm::vec3 leaving = shader::glassExitDirection(inside, glm::normalize(exit - glass.center), glass.ior);
-    return glm::mix(sky(leaving), sky(glm::reflect(dir, n)), reflectance);
+    if (first) *first = {p, n};
+    const shader::GlassPaths g = shader::glassSpherePaths(dir, n, glass.ior);
+    if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+    auto follow = [&](glm::vec3 from, glm::vec3 d) {
+      return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr, &glass);
+    };
+    const glm::vec3 exit = p + g.chord * glass.radius * g.inside;
+    return glm::mix(follow(exit, g.leaving), follow(p, g.reflected), g.reflectance);
+  }
+
+  // Whether p lies in the pool's water, below its rest level.
+  bool inPoolWater(glm::vec3 p) const {
+    return waterMesh_ >= 0 && p.y < level_ && std::max(std::abs(p.x), std::abs(p.z)) <= poolHalf_;
   }
 
   // A surface's radiance with its glossy lobe (material: specular, roughness)
@@ -425,13 +418,13 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const glm::vec2 point = pixelSamplePoint(s, options.samples);
         cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
-        sum += tracer.cameraRadiance(origin, dir, cameraInWater, 0, {sunSample(s, k), scatterSample(s, k)}, nullptr);
+        sum += tracer.radiance(origin, dir, cameraInWater, 0, {sunSample(s, k), scatterSample(s, k)}, nullptr);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;
       cameraRay(float(x) + 0.5f, float(y) + 0.5f, origin, dir);
-      tracer.cameraRadiance(origin, dir, cameraInWater, options.maxSpecular, PathSample{},
-                            &first);  // no branches: the surface alone
+      tracer.radiance(origin, dir, cameraInWater, options.maxSpecular, PathSample{},
+                      &first);  // no branches: the surface alone
       for (int c = 0; c < 3; ++c) {
         out.rgba[k * 4 + c] = color[c];
         out.normal[k * 4 + c] = first.normal[c];

@@ -33,11 +33,15 @@ void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeli
 
 }  // namespace
 
-Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, bool scattering)
-    : back_(gpu::createGraphicsPipeline(ctx,
+Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool)
+    : pool_(pool),
+      back_(gpu::createGraphicsPipeline(ctx,
                                         glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
-      front_(gpu::createGraphicsPipeline(ctx, glassSide(fragmentVariant("glass.frag", {.scattering = scattering}),
-                                                        kHdrFormat, vk::CullModeFlagBits::eBack))) {
+      front_(gpu::createGraphicsPipeline(
+          // Glass writes colour alone, so it has no colour-only variants.
+          ctx, glassSide(fragmentVariant("glass.frag",
+                                         {.gbuffer = true, .shadows = needs.shadows, .scattering = needs.scattering}),
+                         kHdrFormat, vk::CullModeFlagBits::eBack))) {
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
                                   "glass back faces");
@@ -81,7 +85,12 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                                    .uniformBuffer(0, in.uniforms, Use::HostData)
                                    .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
                                    .sampledImage(2, backFacesRef_, in.nearest, Use::FragmentSample)
-                                   .uniformBuffer(3, in.medium, Use::FragmentUniformRead);
+                                   .constantBuffer(3, *pool_.uniforms)
+                                   .constantBuffer(4, *pool_.objects)
+                                   .uniformBuffer(5, in.medium, Use::FragmentUniformRead)
+                                   .sampledImage(6, pool_.caustics, in.clamp, Use::FragmentSample)
+                                   .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample)
+                                   .constantStorageBuffer(8, *pool_.floorVertices);
                return [this, &color, &depth, &set, &spheres](PassContext& pc) {
                  drawOver(pc.cmd, color, depth, [&] {
                    pc.cmd.bindPipeline(front_.bindPoint, *front_.pipeline);

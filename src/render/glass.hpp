@@ -3,10 +3,12 @@
 // pass draws their back faces into a normal and view-depth target, then a
 // pass draws their front faces over the frame, each pixel searching that
 // target for where its refracted ray leaves (shaders_glsl/glass_back.frag,
-// glass.frag). Declared only for a scene with glass; recorded only for a
-// frame with glass spheres in view.
+// glass.frag), and the rays that leave look up the scene by the analytic
+// casts the water's rays use. Declared only for a scene with glass; recorded
+// only for a frame with glass spheres in view.
 #include <vector>
 
+#include "render/pool.hpp"
 #include "render/surfaces.hpp"
 #include "shared/glass.h"
 
@@ -17,14 +19,17 @@ constexpr vk::Format kGlassBackFormat = vk::Format::eR32G32B32A32Sfloat;  // out
 class Glass {
  public:
   // Makes the back faces' target and the depth buffer its draw tests against.
-  // `scattering`: the water scatters (the glass seen from under it gathers that).
-  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, bool scattering);
+  // `needs`: the shadows and the water's scattering (no G-buffer: glass is
+  // drawn after AO). `pool`: the pool, or NoPool's stand-ins (their
+  // uniforms hold the ground the rays leaving the glass meet).
+  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool);
   // `spheres`: the glass spheres in view when the frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
                const std::vector<shader::GlassSphereParams>& spheres) const;
 
  private:
   gpu::Image backFaces_, depth_;
+  PoolDraw pool_;
   GraphImage backFacesRef_, depthRef_;
   gpu::Pipeline back_, front_;
 };

@@ -1,30 +1,19 @@
 #include "render/objects.hpp"
 
 #include "gpu/commands.hpp"
-#include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
-#include "render/sky_image.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/objects_model.hpp"
-#include "shared/pool.h"
 
 namespace tp::render {
 
-Objects::Objects(const gpu::Context& ctx, FrameGraph& graph, FragmentNeeds needs, const PoolDraw* pool)
+Objects::Objects(const gpu::Context& ctx, FragmentNeeds needs, const PoolDraw& pool)
     : spheres_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("sphere.vert", "sphere.frag", sizeof(shader::SphereParams), needs))),
       boxes_(
           gpu::createGraphicsPipeline(ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), needs))),
-      poolUniforms_(pool ? pool->uniforms : nullptr),
-      caustics_(pool ? pool->caustics : GraphImage{}) {
-  if (pool) return;
-  const shader::PoolParams none{};
-  noPool_ = gpu::createFilledBuffer(ctx, &none, sizeof(none), vk::BufferUsageFlagBits::eUniformBuffer,
-                                    gpu::MemoryUse::Upload, "no pool uniforms");
-  noCaustics_ = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics for the objects");
-  poolUniforms_ = &*noPool_;
-  caustics_ = graph.image("objects' caustics", *noCaustics_, vk::ImageLayout::eShaderReadOnlyOptimal);
-}
+      poolUniforms_(pool.uniforms),
+      caustics_(pool.caustics) {}
 
 void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                       const ObjectsInView& inView) const {

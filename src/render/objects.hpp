@@ -2,7 +2,6 @@
 // The scene's spheres and boxes, one draw each, where the renderer says they
 // are when the frame records (spheres may move from frame to frame); the
 // pass is left out of a frame where none is in view.
-#include <optional>
 #include <vector>
 
 #include "render/pool.hpp"
@@ -21,15 +20,13 @@ struct ObjectsInView {
 class Objects {
  public:
   // `pool`: the pool, whose caustics light the objects' parts under the
-  // water (none: stand-ins that light nothing differently).
-  Objects(const gpu::Context& ctx, FrameGraph& graph, FragmentNeeds needs, const PoolDraw* pool);
+  // water, or NoPool's stand-ins, which light nothing differently.
+  Objects(const gpu::Context& ctx, FragmentNeeds needs, const PoolDraw& pool);
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                const ObjectsInView& inView) const;
 
  private:
   gpu::Pipeline spheres_, boxes_;
-  std::optional<gpu::Buffer> noPool_;     // without a pool: its uniforms, zero (no caustics reach anything)
-  std::optional<gpu::Image> noCaustics_;  // without a pool: one texel of 1
   const gpu::Buffer* poolUniforms_;
   GraphImage caustics_;
 };

@@ -9,11 +9,11 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
-#include "shared/objects.h"
 
 namespace tp::render {
 
-Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
+Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer,
+           const gpu::Buffer& objects)
     : walls_(
           gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0,
                                                           {gbuffer, castsShadows(scene), hasWaterScattering(scene)}))),
@@ -29,12 +29,8 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
                                           gpu::MemoryUse::Device, "pool floor indices");
   floorVertices_ = gpu::createFilledBuffer(ctx, model.floorVertices, vk::BufferUsageFlagBits::eStorageBuffer,
                                            gpu::MemoryUse::Device, "pool floor vertices");
-  // Filled by the renderer before each frame: the spheres may move.
-  objectUniforms_ = gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
-                                      gpu::MemoryUse::Upload, "scene objects");
-  draw_ = PoolDraw{
-      &uniforms_, &objectUniforms_, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid, &floorVertices_,
-      {}};
+  draw_ = PoolDraw{&uniforms_,      &objects, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid,
+                   &floorVertices_, {}};
   if (scene.render.caustics) {
     caustics_ =
         gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
@@ -90,6 +86,24 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
       drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor_, set, draw_); });
     };
   });
+}
+
+NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& objects,
+               const shader::GroundParams& ground) {
+  const shader::PoolParams none{.ground = ground};
+  uniforms_ = gpu::createFilledBuffer(ctx, &none, sizeof(none), vk::BufferUsageFlagBits::eUniformBuffer,
+                                      gpu::MemoryUse::Upload, "no pool uniforms");
+  const std::vector<glm::vec4> vertex(1, glm::vec4(0.0f));
+  floorVertices_ = gpu::createFilledBuffer(ctx, vertex, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device,
+                                           "no pool floor vertices");
+  caustics_ = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
+  draw_ = PoolDraw{&uniforms_,
+                   &objects,
+                   nullptr,
+                   0,
+                   0,
+                   &floorVertices_,
+                   graph.image("caustics", caustics_, vk::ImageLayout::eShaderReadOnlyOptimal)};
 }
 
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,

@@ -8,15 +8,17 @@
 #include "render/surfaces.hpp"
 #include "render/water_draw.hpp"
 #include "scene/scene.hpp"
+#include "shared/ground.h"
 
 namespace tp::render {
 
 constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
 constexpr uint32_t kWallVertices = 24;                                   // pool_walls.vert: four quads
 
-// What other passes need of the pool: its uniforms, the spheres the water's
-// rays can meet, the floor grid and its vertices, and the caustics (the caustics pass's
-// target, or one texel of 1 when the scene has caustics off).
+// What other passes need of the pool: its uniforms, the objects the rays
+// cast in shaders meet (the renderer's, filled before each frame), the floor
+// grid and its vertices, and the caustics (the caustics pass's target, or
+// one texel of 1 when the scene has caustics off).
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
   const gpu::Buffer* objects = nullptr;
@@ -29,20 +31,34 @@ struct PoolDraw {
 
 class Pool {
  public:
-  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer);
+  // `objects`: the objects the rays cast in shaders meet (shader::SceneObjects).
+  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer, const gpu::Buffer& objects);
   const PoolDraw& draw() const { return draw_; }
-  // The objects the water's rays meet, filled by the host before each frame.
-  const gpu::Buffer& objectUniforms() const { return objectUniforms_; }
   // The caustics pass, when the scene has caustics.
   void declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const;
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
 
  private:
-  gpu::Buffer uniforms_, objectUniforms_, floorIndices_, floorVertices_;
+  gpu::Buffer uniforms_, floorIndices_, floorVertices_;
   gpu::Image caustics_;
   PoolDraw draw_;
   gpu::Pipeline walls_, floor_;
   std::optional<gpu::Pipeline> causticsPipeline_;
+};
+
+// What stands for the pool in a scene without one, for the passes that read
+// it whatever the scene (the objects, the glass): uniforms of zero but for
+// the ground (no hole, no water: no caustics reach anything), one floor
+// vertex, one caustics texel of 1.
+class NoPool {
+ public:
+  NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& objects, const shader::GroundParams& ground);
+  const PoolDraw& draw() const { return draw_; }
+
+ private:
+  gpu::Buffer uniforms_, floorVertices_;
+  gpu::Image caustics_;
+  PoolDraw draw_;
 };
 
 // The walls, then the floor, with `set` holding what either reads.

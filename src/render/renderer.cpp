@@ -46,6 +46,9 @@ struct Renderer::Resources {
         uniforms(gpu::createBuffer(ctx, sizeof(shader::FrameUniforms), vk::BufferUsageFlagBits::eUniformBuffer,
                                    gpu::MemoryUse::Upload, "frame uniforms")),
         uniformsRef(graph.buffer("frame uniforms", uniforms)),
+        // Filled before each frame: the spheres may move.
+        objectUniforms(gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
+                                         gpu::MemoryUse::Upload, "scene objects")),
         // The G-buffer: AO reads it (or nothing is skipped).
         targets(ctx, graph, frame, scene.ao.enabled || !options.skipping,
                 scene.ao.enabled || scene.render.antialiasing == "morphological"),
@@ -65,9 +68,11 @@ struct Renderer::Resources {
     sky.declareBackground(graph, surfaces.color, in);
     ground.declare(graph, surfaces, in);
     if (pool) pool->declare(graph, surfaces, in);
+    if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
+      noPool.emplace(ctx, graph, objectUniforms, ground.params());
+    const PoolDraw* poolDraw = pool ? &pool->draw() : noPool ? &noPool->draw() : nullptr;
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
-      objects.emplace(ctx, graph, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)},
-                      pool ? &pool->draw() : nullptr);
+      objects.emplace(ctx, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)}, *poolDraw);
       objects->declare(graph, surfaces, in, opaqueInView);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -78,10 +83,11 @@ struct Renderer::Resources {
     }
     if (waterSurface) waterSurface->declareUnderwater(graph, surfaces.color);
     // Glass after AO (it neither occludes nor is occluded) and after the
-    // apparent-depth mode's copy (the water's rays do not meet glass), before
-    // the water, which draws over what of it is under the surface.
-    if (std::any_of(scene.spheres.begin(), scene.spheres.end(), scene::isGlass)) {
-      glass.emplace(ctx, graph, frame, hasWaterScattering(scene));
+    // apparent-depth mode's copy (the water's rays cast against glass
+    // instead), before the water, which draws over what of it is under the
+    // surface.
+    if (scene::hasGlass(scene)) {
+      glass.emplace(ctx, graph, frame, FragmentNeeds{false, castsShadows(scene), hasWaterScattering(scene)}, *poolDraw);
       glass->declare(graph, surfaces, in, glassInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
@@ -118,7 +124,7 @@ struct Renderer::Resources {
                },
                {.cached = false, .runIf = [this] { return water->simulating(); }});
     medium.declare(graph, draw, in, [this] { return !skipping || cameraOverWater(live) || mediumMayNotBeAir; });
-    pool.emplace(ctx, graph, scene, targets.surfaces().gbuffer());
+    pool.emplace(ctx, graph, scene, targets.surfaces().gbuffer(), objectUniforms);
     pool->declareCaustics(graph, draw, in);
   }
 
@@ -131,10 +137,14 @@ struct Renderer::Resources {
     opaqueInView = {};
     aovInView = {};
     glassInView.clear();
+    // Objects wholly over the water are left out of the casts under it.
+    const shader::SceneObjects casts =
+        sceneObjects(placed, skipping && water ? water->top() : std::numeric_limits<float>::infinity());
+    std::memcpy(objectUniforms.mapped, &casts, sizeof(casts));
     for (const auto& sphere : placed.spheres) {
       if (skipping && !frustum.mayShow(sphere.center, sphere.radius)) continue;
       if (scene::isGlass(sphere)) {
-        glassInView.push_back(glassSphereParams(sphere, glassSteps));
+        glassInView.push_back(glassSphereParams(sphere, glassSteps, sphereSlot(casts, sphere)));
       } else {
         opaqueInView.spheres.push_back(sphereParams(sphere));
       }
@@ -146,12 +156,6 @@ struct Renderer::Resources {
       }
     }
     aovInView.boxes = opaqueInView.boxes;
-    if (pool) {
-      // Objects wholly over the water are left out of the casts under it.
-      const shader::SceneObjects casts =
-          sceneObjects(placed, skipping && water ? water->top() : std::numeric_limits<float>::infinity());
-      std::memcpy(pool->objectUniforms().mapped, &casts, sizeof(casts));
-    }
   }
 
   // The readbacks a request asks for: their passes, and those they depend on, record.
@@ -198,6 +202,7 @@ struct Renderer::Resources {
   Samplers samplers;
   gpu::Buffer uniforms;
   GraphBuffer uniformsRef;
+  gpu::Buffer objectUniforms;  // the objects the rays cast in shaders meet (shader::SceneObjects)
   FrameTargets targets;
   Sky sky;
   GlossyEnvironment glossy;
@@ -208,6 +213,7 @@ struct Renderer::Resources {
   std::optional<sim::WaterDriver> water;
   std::optional<WaterSurface> waterSurface;
   std::optional<Pool> pool;
+  std::optional<NoPool> noPool;  // without water, for the objects and the glass
   std::optional<Objects> objects;
   std::optional<AmbientOcclusion> ao;
   std::optional<Glass> glass;

@@ -84,6 +84,7 @@ std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds nee
   if (!needs.gbuffer) name += ".color_only";
   if (!needs.shadows) name += ".no_shadows";
   if (needs.scattering) name += ".scattering";
+  if (needs.glass) name += ".glass";
   return name + ".frag";
 }
 

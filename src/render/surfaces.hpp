@@ -70,16 +70,18 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
 // What a scene needs of a fragment shader, which picks its variant
 // (cmake/shaders.cmake): the G-buffer outputs, the sun shadows' code
 // (shading/frame_uniforms.hpp's castsShadows), the light scattered in the
-// water (shading/water_model.hpp's hasWaterScattering).
+// water (shading/water_model.hpp's hasWaterScattering), glass the water's
+// rays meet (scene::hasGlass).
 struct FragmentNeeds {
   bool gbuffer = true;
   bool shadows = true;
   bool scattering = false;
+  bool glass = false;
 };
 
 // The variant of a fragment shader NAME.frag: NAME, then .color_only
 // without the G-buffer, .no_shadows without shadows, .scattering with
-// scattering, then .frag.
+// scattering, .glass with glass, then .frag.
 std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds needs);
 
 // A pipeline of an opaque surface: colour, the two G-buffer targets (or,

@@ -26,7 +26,7 @@ bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction =
 
 // The water's shaders have no G-buffer outputs and no colour-only variant.
 FragmentNeeds waterNeeds(const scene::Scene& scene) {
-  return {.shadows = castsShadows(scene), .scattering = hasWaterScattering(scene)};
+  return {.shadows = castsShadows(scene), .scattering = hasWaterScattering(scene), .glass = scene::hasGlass(scene)};
 }
 
 }  // namespace

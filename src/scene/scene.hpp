@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -111,7 +112,8 @@ struct Keyframe {
 
 // A sphere; with a path it moves (linearly between keyframes, held before the
 // first and after the last) and pushes the water as it goes. Lambertian, or
-// glass (docs/glass.md): refracting the sky through it, seen directly only.
+// glass (docs/glass.md): refracting and reflecting the scene, seen directly
+// and in the water.
 struct Sphere {
   glm::vec3 center{0.0f};
   float radius = 0.5f;
@@ -245,6 +247,9 @@ Scene defaultScene();
 // The scene as it stands at time t (seconds from its start): every sphere
 // where its path puts it.
 Scene sceneAt(const Scene& scene, float t);
+
+// Whether any of the scene's spheres is glass.
+inline bool hasGlass(const Scene& scene) { return std::any_of(scene.spheres.begin(), scene.spheres.end(), isGlass); }
 
 // Throws with the field and the bound on the first impossible value.
 void validateScene(const Scene& scene);

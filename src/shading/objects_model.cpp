@@ -8,7 +8,6 @@ namespace tp::render {
 shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   shader::SceneObjects objects{};
   std::vector<scene::Sphere> spheres = scene.spheres;
-  std::erase_if(spheres, scene::isGlass);  // the water's rays do not meet glass (docs/glass.md)
   std::vector<scene::Box> boxes = scene.boxes;
   // Boxes turn about the vertical only: their lowest point is half their height down.
   const auto sphereBelow = std::stable_partition(
@@ -20,7 +19,8 @@ shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   for (size_t i = 0; i < spheres.size(); ++i) {
     objects.spheres[i] = glm::vec4(spheres[i].center, spheres[i].radius);
     objects.sphereAlbedo[i] = glm::vec4(spheres[i].albedo, 0.0f);
-    objects.sphereMaterial[i] = glm::vec4(spheres[i].specular, spheres[i].roughness, 0.0f, 0.0f);
+    objects.sphereMaterial[i] =
+        glm::vec4(spheres[i].specular, spheres[i].roughness, scene::isGlass(spheres[i]) ? spheres[i].ior : 0.0f, 0.0f);
   }
   for (size_t i = 0; i < boxes.size(); ++i) {
     const shader::BoxParams box = boxParams(boxes[i]);
@@ -56,10 +56,17 @@ shader::SphereParams sphereParams(const scene::Sphere& sphere) {
           glm::uvec4(kSphereStacks, kSphereSlices, 0u, 0u), glm::vec4(sphere.specular, sphere.roughness, 0.0f, 0.0f)};
 }
 
-shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps) {
+uint32_t sphereSlot(const shader::SceneObjects& objects, const scene::Sphere& sphere) {
+  for (uint32_t i = 0; i < objects.count.x; ++i) {
+    if (objects.spheres[i] == glm::vec4(sphere.center, sphere.radius)) return i;
+  }
+  return shader::kSkipNoSphere;
+}
+
+shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps, uint32_t slot) {
   const shader::SphereParams shape = sphereParams(sphere);
   return {shape.sphere, shape.albedo, shape.tessellation, glm::vec4(sphere.ior, 0.0f, 0.0f, 0.0f),
-          glm::uvec4(searchSteps, 0u, 0u, 0u)};
+          glm::uvec4(searchSteps, slot, 0u, 0u)};
 }
 
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name) {

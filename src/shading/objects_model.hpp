@@ -4,6 +4,7 @@
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shared/glass.h"
+#include "shared/object_cast.h"
 #include "shared/objects.h"
 
 namespace tp::render {
@@ -19,13 +20,18 @@ inline uint32_t sphereVertexCount(glm::uvec4 tessellation) { return tessellation
 // The one place where the scene's objects become shader parameters. Objects
 // whose lowest point is below `waterTop` come first and are counted in
 // count.zw: only they can meet a ray under the water surface (the default
-// counts every object in). Glass spheres are left out: the water's rays do
-// not meet them.
+// counts every object in). Glass spheres are in, their index in
+// sphereMaterial.z.
 shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop = std::numeric_limits<float>::infinity());
+// Where `sphere` is among `objects`' spheres (their centre and radius are
+// copied from the same floats, so they match exactly), or
+// shader::kSkipNoSphere when it is not there.
+uint32_t sphereSlot(const shader::SceneObjects& objects, const scene::Sphere& sphere);
 shader::SphereParams sphereParams(const scene::Sphere& sphere);
 shader::BoxParams boxParams(const scene::Box& box);
-// A glass sphere's draw, with the binary search's steps (render.glass_search_steps).
-shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps);
+// A glass sphere's draw, with the binary search's steps (render.glass_search_steps)
+// and its slot among the objects the glass's own rays pass by (sphereSlot).
+shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps, uint32_t slot);
 // The sphere as sphere.vert tessellates it, the box as box.vert draws it.
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name);
 scene::Mesh boxMesh(const scene::Box& box, const std::string& name);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "shading/water_model.hpp"
 #include "shared/shading.h"
 
 namespace tp::render {
@@ -35,6 +36,10 @@ PoolModel poolModel(const scene::Scene& scene) {
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
       .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
       .water = {scene.water.level, scene.water.ior, causticsReach(scene, kCausticsSize), 0.0f},
+      .extinction =
+          glm::vec4(scene.water.absorption + scene.water.scattering, float(scene.water.scatteringShadowPieces)),
+      .scattering = glm::vec4(scene.water.scattering, scene.water.scatteringAnisotropy),
+      .ground = groundParams(scene),
   };
   std::vector<glm::vec4> vertices;
   vertices.reserve(size_t(kPoolFloorGrid) * kPoolFloorGrid);

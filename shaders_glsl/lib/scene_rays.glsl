@@ -1,0 +1,277 @@
+// What a ray leaving a surface sees, by analytic casts: the water's
+// reflected and refracted rays and the glass's. Bindings 0, 1, 3, 4 and 6-8;
+// the includer declares the rest. In the air: the spheres and boxes, the
+// ground, the walls above the water, the water as flat, else the sky. Below
+// the water: the pool (walls, and the floor lit through the caustics) and
+// the objects, through the absorbing, scattering water.
+//
+// A shader cannot recurse, and lavapipe compiles every call inlined: each
+// cast written out once more costs seconds of pipeline compilation. So the
+// casts come in loops that follow one ray after another (glass.frag,
+// backdrop below), each cast written once.
+#ifndef TP_LIB_SCENE_RAYS
+#define TP_LIB_SCENE_RAYS
+#include "shared/glass.h"
+#include "shared/objects.h"
+#include "shared/shading.h"
+#include "lib/glossy_lookup.glsl"
+
+layout(binding = 0) uniform Frame { FrameUniforms frame; };
+#include "shared/sun_shadow.h"  // reads `frame` in place
+#include "shared/water_scattering.h"  // reads `frame` in place
+layout(binding = 1) uniform sampler2D skyTexture;
+layout(binding = 3) uniform Pool { PoolParams pool; };
+layout(binding = 4) uniform Objects { SceneObjects objects; };  // shared/object_cast.h's
+layout(binding = 6) uniform sampler2D caustics;
+layout(binding = 7) uniform sampler2D glossyMap;  // the glossy walls' and spheres' environment
+layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  // shared/pool_trace.h's
+#include "shared/pool_trace.h"
+#include "shared/object_cast.h"
+
+vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
+
+// What the water scatters into the ray from `start` along `dir` (unit, under
+// the water) over `length`; nothing, and no code, in the variants for water
+// that does not scatter.
+#ifdef TP_SCATTERING
+vec3 inScatter(vec3 start, vec3 dir, float length) {
+  return waterInScatter(pool.extinction.rgb, pool.scattering, pool.water.x, pool.water.y, uint(pool.extinction.w),
+                        start, dir, length);
+}
+#else
+vec3 inScatter(vec3 start, vec3 dir, float length) { return vec3(0.0); }
+#endif
+
+// Whether p lies in the pool's water, below its rest level.
+bool inPoolWater(vec3 p) { return pool.box.x > 0.0 && max(abs(p.x), abs(p.z)) < pool.box.x && p.y < pool.water.x; }
+
+// The sun at `met` under the water: its share in view, through the waves
+// (the caustics texture at its light line).
+float sunUnderWater(vec3 met) {
+  return frameSunShare(met) * texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r;
+}
+
+// The pool's wall or floor `hit` met by a ray under the water along t, at
+// `sunShare` of the sun (sunUnderWater); the floor's tiles filtered over
+// `footprint`, the wall's bricks point-sampled.
+vec3 poolSurfaceSeen(PoolHit hit, vec3 t, vec2 footprint, float sunShare) {
+  if (hit.floor) return poolFloorRadiance(pool, frame, hit.position, hit.normal, footprint, sunShare);
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0), sunShare), t,
+                        hit.normal, pool.wallGloss.xy);
+}
+
+// What a ray in the air meets first of the ground, the walls above the
+// water and the water (flat at its rest level), objects left out: how far,
+// which, and the normal there (a wall's inward one).
+const uint kMetNothing = 0u, kMetGround = 1u, kMetWall = 2u, kMetWater = 3u;
+struct AirHit {
+  float distance;  // 1e30 for nothing
+  uint met;
+  vec3 normal;
+};
+
+AirHit airSurface(vec3 p, vec3 r) {
+  AirHit hit = AirHit(1e30, kMetNothing, vec3(0.0, 1.0, 0.0));
+  const GroundParams ground = pool.ground;
+  const float hole = ground.plane.w;  // 0: no pool
+  const bool inHole = max(abs(p.x), abs(p.z)) < hole && p.y <= ground.plane.y;
+  // Where the ray is in the hole (at p, or where it goes down through the
+  // ground's plane), or meets the ground.
+  float sEnter = inHole ? 0.0 : -1.0;
+  if (!inHole && r.y < 0.0 && p.y > ground.plane.y) {
+    const float s = (ground.plane.y - p.y) / r.y;
+    const vec3 q = p + s * r;
+    const float reach = max(abs(q.x), abs(q.z));
+    if (reach < hole) {
+      sEnter = s;
+    } else if (reach <= ground.plane.x) {
+      hit = AirHit(s, kMetGround, vec3(0.0, 1.0, 0.0));
+    }
+  }
+  if (sEnter >= 0.0) {
+    const vec3 q = p + sEnter * r;
+    const vec2 walls = poolWallDistances(pool, q, r);
+    const float sWall = min(walls.x, walls.y);
+    const float toWater = r.y < 0.0 ? (pool.water.x - q.y) / r.y : 1e30;
+    if (toWater < sWall) {
+      hit = AirHit(sEnter + toWater, kMetWater, vec3(0.0, 1.0, 0.0));
+    } else if (q.y + sWall * r.y <= pool.box.y) {  // below the rim; past it the ray leaves the hole
+      hit = AirHit(sEnter + sWall, kMetWall, poolWallNormal(walls, r));
+    }
+  }
+  return hit;
+}
+
+// The ground or a wall met in the air at q along r (AirHit), at `sunShare`
+// of the sun; the ground's checker filtered over `footprint`, the wall's
+// bricks point-sampled.
+vec3 airSurfaceSeen(AirHit hit, vec3 q, vec3 r, vec2 footprint, float sunShare) {
+  if (hit.met == kMetGround) return groundRadiance(pool.ground, frame, q.xz, footprint, hit.normal, sunShare);
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, q, hit.normal, vec2(0.0), sunShare), r, hit.normal,
+                        pool.wallGloss.xy);
+}
+
+// How far a ray under the water from p along r goes up to the flat surface
+// at the rest level, or -1 when it meets a wall first or goes down.
+float toSurfaceFromBelow(vec3 p, vec3 r) {
+  if (r.y <= 0.0) return -1.0;
+  const float s = (pool.water.x - p.y) / r.y;
+  const vec2 walls = poolWallDistances(pool, p, r);
+  return min(walls.x, walls.y) > s ? s : -1.0;
+}
+
+// The flat water's exact Fresnel reflectance for a ray along r, from the
+// side `fromWater` says; 1 past the critical angle.
+float flatWaterReflectance(vec3 r, bool fromWater) {
+  return fromWater ? fresnelDielectric(r.y, pool.water.y, 1.0) : fresnelDielectric(-r.y, 1.0, pool.water.y);
+}
+
+#ifdef TP_GLASS
+// What a glass sphere met by the water's rays shows along one of its exact
+// paths: the backdrop, the scene without its objects, in straight-line code.
+// Lavapipe runs every branch of the water's shader for every pixel (masked)
+// and every loop at least once, so what is written here costs the whole
+// water surface: the floor is flat at its mean depth, the walls plain
+// (their bricks' colour, no gloss), and there are no shadows, caustics or
+// scattered light. At the flat water the ray into the air looks up the
+// sky; from below, the reflection is left out unless the surface reflects
+// it all. Measured: the brick walls' code alone took the default-size
+// water pass from 178 to 215 ms.
+vec3 backdrop(vec3 p, vec3 r) {
+  vec3 sum = vec3(0.0), weight = vec3(1.0);
+  // What the ray ends on, shaded once below: the ground, a wall, the floor, or the sky.
+  AirHit end = AirHit(1e30, kMetNothing, vec3(0.0, 1.0, 0.0));
+  bool water = inPoolWater(p);
+  if (!water) {
+    end = airSurface(p, r);
+    if (end.met == kMetWater) {
+      const float reflectance = flatWaterReflectance(r, false);
+      sum = reflectance * sky(reflect(r, end.normal));
+      weight = vec3(1.0 - reflectance);
+      p += end.distance * r;
+      r = refract(r, end.normal, 1.0 / pool.water.y);
+      water = true;
+    }
+  } else {
+    const float up = toSurfaceFromBelow(p, r);
+    const vec3 down = vec3(0.0, -1.0, 0.0);
+    const vec3 toAir = up > 0.0 ? refract(r, down, pool.water.y) : vec3(0.0);
+    if (dot(toAir, toAir) > 0.0) {  // out into the sky
+      weight = (1.0 - flatWaterReflectance(r, true)) * exp(-pool.extinction.rgb * up);
+      r = toAir;
+      water = false;
+    } else if (up > 0.0) {  // reflected whole
+      weight = exp(-pool.extinction.rgb * up);
+      p += up * r;
+      r = reflect(r, down);
+    }
+  }
+  float travel = 0.0;  // through the water
+  if (water) {
+    // A wall, or the floor flat at its mean depth.
+    const vec2 walls = poolWallDistances(pool, p, r);
+    const float sWall = min(walls.x, walls.y);
+    const float sFloor = r.y < 0.0 ? (pool.box.y - pool.box.z - p.y) / r.y : 1e30;
+    end = sFloor < sWall ? AirHit(sFloor, kMetGround, vec3(0.0, 1.0, 0.0))
+                         : AirHit(sWall, kMetWall, poolWallNormal(walls, r));
+    travel = end.distance;
+  }
+  const vec3 q = p + end.distance * r;
+  vec3 seen;
+  if (end.met == kMetNothing) {
+    seen = sky(r);
+  } else if (end.met == kMetWall) {
+    seen = objectRadiance(frame, pool.wallAlbedo.w > 0.5 ? pool.brickAlbedo.rgb : pool.wallAlbedo.rgb, end.normal, 1.0);
+  } else if (water) {
+    seen = poolFloorRadiance(pool, frame, q, end.normal, vec2(0.0), 1.0);
+  } else {
+    seen = groundRadiance(pool.ground, frame, q.xz, vec2(0.0), end.normal, 1.0);
+  }
+  return sum + weight * seen * exp(-pool.extinction.rgb * travel);
+}
+
+// A glass sphere met at p along `dir`: the backdrop along its two exact
+// paths (shared/glass.h), one after the other.
+vec3 glassSeen(ObjectHit object, vec3 p, vec3 dir) {
+  const GlassPaths g = glassSpherePaths(dir, object.normal, object.glass);
+  const vec3 exit = p + g.chord * objects.spheres[object.sphere].w * g.inside;
+  vec3 sum = vec3(0.0);
+  TP_DONT_UNROLL for (int k = 0; k < 2; ++k) {
+    const vec3 from = k == 0 ? exit : p, along = k == 0 ? g.leaving : g.reflected;
+    sum += (k == 0 ? 1.0 - g.reflectance : g.reflectance) * backdrop(from, along);
+  }
+  return sum;
+}
+#endif
+
+// An object met at p along `dir`, at `sunShare` of the sun. The variants
+// for scenes without glass (TP_GLASS undefined) meet none.
+vec3 objectSeen(ObjectHit object, vec3 p, vec3 dir, float sunShare) {
+#ifdef TP_GLASS
+  if (object.glass > 0.0) return glassSeen(object, p, dir);
+#endif
+  return glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal, sunShare), dir, object.normal,
+                        object.material);
+}
+
+// What a ray leaving p (inside the pool, below the rim, in the air) along r
+// upwards sees: an object, the part of a wall above the water, or the sky
+// over the rim.
+vec3 radianceAbove(vec3 p, vec3 r) {
+  const vec2 walls = poolWallDistances(pool, p, r);
+  const float sWall = min(walls.x, walls.y);
+  const bool wall = sWall > 0.0 && p.y + sWall * r.y <= pool.box.y;  // below the rim
+  const ObjectHit object = castObjects(objects.count.xy, p, r, wall ? sWall : 1e30, kSkipNoSphere);
+  if (object.distance <= 0.0 && !wall) return sky(r);
+  // One sun share for what is met (the shader holds its code once).
+  const float distance = object.distance > 0.0 ? object.distance : sWall;
+  const float sunShare = frameSunShare(p + distance * r);
+  if (object.distance > 0.0) return objectSeen(object, p + distance * r, r, sunShare);
+  // The wall's bricks point-sampled, as the reference tracer does: derivatives
+  // are not to be had in this divergent branch.
+  const vec3 wallNormal = poolWallNormal(walls, r);
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0), sunShare), r,
+                        wallNormal, pool.wallGloss.xy);
+}
+
+// A ray's screen derivatives (Igehy 1999): of its origin and of its unit
+// direction, one pixel right (x) and down (y).
+struct RayDifferential {
+  vec3 originX, originY, directionX, directionY;
+};
+
+// Taken where every lane of the pixel quad runs the same code: derivatives
+// of values computed in divergent code (a cast's hit) are undefined. Scaled
+// to the filter's width (FrameUniforms::sampling).
+RayDifferential rayDifferential(vec3 origin, vec3 direction) {
+  const float w = frame.sampling.x;
+  return RayDifferential(w * dFdx(origin), w * dFdy(origin), w * dFdx(direction), w * dFdy(direction));
+}
+
+// The footprint in xz of the pixel where its ray, origin + s dir, meets a
+// surface with normal n: each differential carried along the ray to the
+// surface's tangent plane.
+vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
+  const vec3 x = rd.originX + s * rd.directionX, y = rd.originY + s * rd.directionY;
+  const float facing = dot(dir, n);
+  const vec3 dx = x - dir * (dot(x, n) / facing), dy = y - dir * (dot(y, n) / facing);
+  return abs(dx.xz) + abs(dy.xz);
+}
+
+// What a ray leaving p under the water along t sees: the pool (walls, and the
+// floor lit through the caustics) or an object in front of it, attenuated
+// along its path through the water.
+vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
+  const PoolHit hit = tracePool(pool, p, t);
+  const ObjectHit object = castObjects(objects.count.zw, p, t, hit.distance, kSkipNoSphere);
+  const float distance = object.distance > 0.0 ? object.distance : hit.distance;
+  // One sun share for what is met (the shader holds its code once).
+  const vec3 met = p + distance * t;
+  const float sunShare = sunUnderWater(met);
+  const vec3 radiance = object.distance > 0.0
+                            ? objectSeen(object, met, t, sunShare)
+                            : poolSurfaceSeen(hit, t, hitFootprint(rd, t, hit.distance, hit.normal), sunShare);
+  return radiance * exp(-pool.extinction.rgb * distance) + inScatter(p, t, distance);
+}
+
+#endif
