@@ -91,6 +91,7 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
             std::string::npos);
   EXPECT_NE(errorOf(R"({"render": {"exposure": 0}})").find("render.exposure"), std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"clouds": {"coverage": 1.5}}})").find("sky.clouds.coverage"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"sky": {"haze_distance": -1}})").find("sky.haze_distance"), std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"clouds": {"noise": "worley"}}})").find("sky.clouds.noise must be one of"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"sky": {"clouds": {"shape": 1}}})").find("sky.clouds.shape: is not a known key"),

@@ -49,6 +49,8 @@ UseInfo info(Use use) {
               true};
     case Use::FragmentUniformRead:
       return {{S::eFragmentShader, A::eUniformRead}, L::eGeneral, true, false};
+    case Use::ComputeUniformRead:
+      return {{S::eComputeShader, A::eUniformRead}, L::eGeneral, true, false};
     case Use::VertexStorageRead:
       return {{S::eVertexShader, A::eShaderStorageRead}, L::eGeneral, true, false};
     case Use::TransferRead:

@@ -17,6 +17,7 @@ enum class Use {
   DepthReadWrite,       // depth attachment, loaded, tested and written
   VertexStorageRead,    // storage buffer read in the vertex stage
   FragmentUniformRead,  // buffer read as a uniform buffer in the fragment stage
+  ComputeUniformRead,   // buffer read as a uniform buffer in the compute stage
   TransferRead,         // source of a copy
   TransferWrite,        // destination of a copy
   HostData,             // a buffer the host fills, read as uniforms by any stage: no barrier (the submission

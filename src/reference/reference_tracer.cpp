@@ -21,6 +21,7 @@
 #include "shading/water_model.hpp"
 #include "shared/glass.h"
 #include "shared/glossy.h"
+#include "shared/haze.h"
 #include "shared/objects.h"
 #include "shared/pool_trace.h"
 #include "shared/shading.h"
@@ -105,6 +106,7 @@ class Tracer {
         skyImage_(std::move(skyImage)),
         ground_(groundParams(scene)),
         maxSpecular_(maxSpecular),
+        hazeDistance_(scene.sky.hazeDistance),
         extinction_(scene.water.absorption + scene.water.scattering),
         scattering_(scene.water.scattering),
         anisotropy_(scene.water.scatteringAnisotropy),
@@ -168,6 +170,16 @@ class Tracer {
                                     : surfaceRadiance(p, dir, hit, specular, path, first);
     if (!inWater) return leaving;
     return glm::exp(-extinction_ * distance) * leaving + inScatter(origin, dir, distance, path);
+  }
+
+  // What the camera at `eye`, in the air, sees along dir through the haze
+  // (shared/haze.h): `radiance` from the surface `first`, faded towards the
+  // sky at the horizon; where no surface is, below the horizon, all haze.
+  glm::vec3 throughHaze(glm::vec3 radiance, glm::vec3 eye, glm::vec3 dir, const SurfacePoint& first) const {
+    if (hazeDistance_ <= 0.0f) return radiance;
+    const glm::vec3 horizon = sky(shader::hazeHorizonDirection(dir));
+    if (!std::isfinite(first.position.x)) return dir.y < 0.0f ? horizon : radiance;
+    return shader::hazed(radiance, horizon, glm::distance(first.position, eye), hazeDistance_);
   }
 
  private:
@@ -349,6 +361,7 @@ class Tracer {
   }
 
   shader::FrameUniforms uniforms_;
+  float hazeDistance_;     // sky.haze_distance: 0, clear air
   bool shadows_;           // render.shadows
   float sunRadius_;        // radians
   float poolHalf_ = 0.0f;  // half the pool's side
@@ -418,7 +431,10 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
       for (uint32_t s = 0; s < options.samples; ++s) {
         const glm::vec2 point = pixelSamplePoint(s, options.samples);
         cameraRay(float(x) + point.x, float(y) + point.y, origin, dir);
-        sum += tracer.radiance(origin, dir, cameraInWater, 0, {sunSample(s, k), scatterSample(s, k)}, nullptr);
+        SurfacePoint met;
+        const glm::vec3 seen =
+            tracer.radiance(origin, dir, cameraInWater, 0, {sunSample(s, k), scatterSample(s, k)}, &met);
+        sum += cameraInWater ? seen : tracer.throughHaze(seen, eye, dir, met);
       }
       const glm::vec3 color = sum / float(options.samples);
       SurfacePoint first;

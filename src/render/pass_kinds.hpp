@@ -26,6 +26,7 @@ inline constexpr PassKind kUnderwater{"underwater"};
 inline constexpr PassKind kGlassBackFaces{"glass back faces"};
 inline constexpr PassKind kGlass{"glass"};
 inline constexpr PassKind kWater{"water"};
+inline constexpr PassKind kHaze{"haze"};
 inline constexpr PassKind kAov{"aov"};
 inline constexpr PassKind kReadbackNormal{"readback normal"};
 inline constexpr PassKind kReadbackPosition{"readback position"};

@@ -18,6 +18,7 @@
 #include "render/glass.hpp"
 #include "render/glossy_environment.hpp"
 #include "render/ground.hpp"
+#include "render/haze.hpp"
 #include "render/morphological_aa.hpp"
 #include "render/objects.hpp"
 #include "render/pass_kinds.hpp"
@@ -51,7 +52,7 @@ struct Renderer::Resources {
                                          gpu::MemoryUse::Upload, "scene objects")),
         // The G-buffer: AO reads it (or nothing is skipped).
         targets(ctx, graph, frame, scene.ao.enabled || !options.skipping,
-                scene.ao.enabled || scene.render.antialiasing == "morphological"),
+                scene.ao.enabled || scene.render.antialiasing == "morphological" || scene.sky.hazeDistance > 0.0f),
         sky(ctx, graph, scene),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
@@ -91,6 +92,11 @@ struct Renderer::Resources {
       glass->declare(graph, surfaces, in, glassInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
+    // The air between the camera and every surface, the water's too.
+    if (scene.sky.hazeDistance > 0.0f) {
+      haze.emplace(ctx);
+      haze->declare(graph, surfaces, in, scene.sky.hazeDistance);
+    }
     if (options.aovs) {
       aovs.emplace(ctx, graph, frame, pool.has_value());
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
@@ -217,6 +223,7 @@ struct Renderer::Resources {
   std::optional<Objects> objects;
   std::optional<AmbientOcclusion> ao;
   std::optional<Glass> glass;
+  std::optional<Haze> haze;
   std::optional<Aovs> aovs;  // when the renderer was made with them
   std::optional<MorphologicalAntialiasing> antialiasing;
   // Filled by render() for the frame being recorded.

@@ -106,6 +106,7 @@ void validateSky(const Scene& s) {
   requireRange(float(s.sky.textureWidth), 16.0f, 16384.0f, "sky.texture_width");
   requireRange(s.sky.rotationDegrees, -360.0f, 360.0f, "sky.rotation");
   requireRange(s.sky.intensity, 0.0f, 1e6f, "sky.intensity");
+  requireRange(s.sky.hazeDistance, 0.0f, 1e6f, "sky.haze_distance");
   if (s.sky.image.empty() && (s.sky.rotationDegrees != 0.0f || s.sky.intensity != 1.0f)) {
     throw std::runtime_error(
         "sky.rotation and sky.intensity turn and scale an image sky (sky.image); the procedural sky turns with "

@@ -59,6 +59,9 @@ struct Sky {
   std::string image;
   float rotationDegrees = 0.0f;  // of the image, about +y, from +x towards +z (as sun_azimuth)
   float intensity = 1.0f;        // the image's radiance scaled by this
+  // Aerial perspective (shared/haze.h): metres of air over which a surface's
+  // light gives way to the horizon's by 1 - 1/e; 0, clear air.
+  float hazeDistance = 0.0f;
   Clouds clouds;
   bool operator==(const Sky&) const = default;
 };

@@ -46,6 +46,7 @@ void visitSkyKeys(R& r, Sky& x) {
   r.text("image", x.image);
   r.number("rotation", x.rotationDegrees);
   r.number("intensity", x.intensity);
+  r.number("haze_distance", x.hazeDistance);
   r.object("clouds", [&](auto& c) {
     c.number("coverage", x.clouds.coverage);
     c.number("scale", x.clouds.scale);
