@@ -122,8 +122,9 @@ void main() {
       const float reflectance = flatWaterReflectance(ray.dir, ray.water);
       const vec3 through = refract(ray.dir, facing, ray.water ? pool.water.y : 1.0 / pool.water.y);
       const vec3 back = reflect(ray.dir, facing);
-      if (!room) {
-        radiance += weight * (ray.water ? (1.0 - reflectance) * sky(through) : reflectance * sky(back));
+      if (!room) {  // the part going into the air (none past the critical angle)
+        const bool intoAir = !ray.water || reflectance < 1.0;
+        if (intoAir) radiance += weight * (ray.water ? (1.0 - reflectance) * sky(through) : reflectance * sky(back));
         continue;
       }
       if (reflectance < 1.0) rays[count++] = GlassRay(met, through, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere);
