@@ -48,8 +48,11 @@ void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const float ior = params.glass.x;
   const uint self = params.search.y;
-  const float reflectance = fresnelDielectric(max(-dot(view, n), 0.0), 1.0, ior);
-  const vec3 inside = refract(view, n, 1.0 / ior);  // from air into glass: always refracts
+  // The front surface's reflection and refraction; the exit is searched for
+  // below (the exact chord's end and its ray go unused).
+  const GlassPaths entry = glassSpherePaths(view, n, ior);
+  const float reflectance = entry.reflectance;
+  const vec3 inside = entry.inside;
   // The exit lies within the longest chord of the sphere, its diameter. The
   // entry point itself is before the back face behind it.
   float before = 0.0, after = 2.0 * params.sphere.w;
@@ -68,7 +71,7 @@ void main() {
   // No back face found at all (a sliver at the silhouette): straight through.
   const vec3 leaving = dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), ior) : inside;
   const vec3 exitPoint = worldPosition + 0.5 * (before + after) * inside;
-  const vec3 reflected = reflect(view, n);
+  const vec3 reflected = entry.reflected;
   // The two rays' footprints, taken here where every lane of the quad runs.
   const RayDifferential footprints[2] =
       RayDifferential[](rayDifferential(exitPoint, leaving), rayDifferential(worldPosition, reflected));
@@ -118,17 +121,17 @@ void main() {
     }
     if (!onObject && (up > 0.0 || airMet.met == kMetWater)) {
       // The flat water: its reflection and its refraction.
-      const vec3 facing = vec3(0.0, ray.water ? -1.0 : 1.0, 0.0);
-      const float reflectance = flatWaterReflectance(ray.dir, ray.water);
-      const vec3 through = refract(ray.dir, facing, ray.water ? pool.water.y : 1.0 / pool.water.y);
-      const vec3 back = reflect(ray.dir, facing);
+      const FlatWaterSplit split = flatWaterSplit(ray.dir, ray.water);
+      const float reflectance = split.reflectance;
       if (!room) {  // the part going into the air (none past the critical angle)
         const bool intoAir = !ray.water || reflectance < 1.0;
-        if (intoAir) radiance += weight * (ray.water ? (1.0 - reflectance) * sky(through) : reflectance * sky(back));
+        if (intoAir)
+          radiance += weight * (ray.water ? (1.0 - reflectance) * sky(split.refracted) : reflectance * sky(split.reflected));
         continue;
       }
-      if (reflectance < 1.0) rays[count++] = GlassRay(met, through, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere);
-      rays[count++] = GlassRay(met, back, weight * reflectance, ray.water, kSkipNoSphere);
+      if (reflectance < 1.0)
+        rays[count++] = GlassRay(met, split.refracted, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere);
+      rays[count++] = GlassRay(met, split.reflected, weight * reflectance, ray.water, kSkipNoSphere);
       continue;
     }
     if (!onObject && !ray.water && airMet.met == kMetNothing) {
@@ -136,8 +139,7 @@ void main() {
       continue;
     }
     // An opaque surface: one sun share and one footprint for whichever.
-    const float sunShare =
-        frameSunShare(met) * (ray.water ? texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r : 1.0);
+    const float sunShare = frameSunShare(met) * (ray.water ? causticsAt(met) : 1.0);
     const vec3 surfaceNormal = ray.water ? poolMet.normal : airMet.normal;
     const vec2 footprint = k < 2 ? hitFootprint(footprints[k], ray.dir, distance, surfaceNormal) : vec2(0.0);
     vec3 seen;

@@ -45,11 +45,12 @@ vec3 inScatter(vec3 start, vec3 dir, float length) { return vec3(0.0); }
 // Whether p lies in the pool's water, below its rest level.
 bool inPoolWater(vec3 p) { return pool.box.x > 0.0 && max(abs(p.x), abs(p.z)) < pool.box.x && p.y < pool.water.x; }
 
-// The sun at `met` under the water: its share in view, through the waves
-// (the caustics texture at its light line).
-float sunUnderWater(vec3 met) {
-  return frameSunShare(met) * texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r;
-}
+// The sun through the waves at `met` under the water, relative to flat
+// water: the caustics texture at its light line.
+float causticsAt(vec3 met) { return texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r; }
+
+// The sun at `met` under the water: its share in view, through the waves.
+float sunUnderWater(vec3 met) { return frameSunShare(met) * causticsAt(met); }
 
 // The pool's wall or floor `hit` met by a ray under the water along t, at
 // `sunShare` of the sun (sunUnderWater); the floor's tiles filtered over
@@ -120,10 +121,20 @@ float toSurfaceFromBelow(vec3 p, vec3 r) {
   return min(walls.x, walls.y) > s ? s : -1.0;
 }
 
-// The flat water's exact Fresnel reflectance for a ray along r, from the
-// side `fromWater` says; 1 past the critical angle.
-float flatWaterReflectance(vec3 r, bool fromWater) {
-  return fromWater ? fresnelDielectric(r.y, pool.water.y, 1.0) : fresnelDielectric(-r.y, 1.0, pool.water.y);
+// The flat water met by a ray along r, from the side `fromWater` says: the
+// exact Fresnel reflectance (1 past the critical angle), the reflected ray,
+// and the refracted one (the zero vector past the critical angle).
+struct FlatWaterSplit {
+  float reflectance;
+  vec3 reflected, refracted;
+};
+
+FlatWaterSplit flatWaterSplit(vec3 r, bool fromWater) {
+  const vec3 facing = vec3(0.0, fromWater ? -1.0 : 1.0, 0.0);
+  const float reflectance =
+      fromWater ? fresnelDielectric(r.y, pool.water.y, 1.0) : fresnelDielectric(-r.y, 1.0, pool.water.y);
+  return FlatWaterSplit(reflectance, reflect(r, facing),
+                        refract(r, facing, fromWater ? pool.water.y : 1.0 / pool.water.y));
 }
 
 #ifdef TP_GLASS
@@ -145,25 +156,24 @@ vec3 backdrop(vec3 p, vec3 r) {
   if (!water) {
     end = airSurface(p, r);
     if (end.met == kMetWater) {
-      const float reflectance = flatWaterReflectance(r, false);
-      sum = reflectance * sky(reflect(r, end.normal));
-      weight = vec3(1.0 - reflectance);
+      const FlatWaterSplit split = flatWaterSplit(r, false);
+      sum = split.reflectance * sky(split.reflected);
+      weight = vec3(1.0 - split.reflectance);
       p += end.distance * r;
-      r = refract(r, end.normal, 1.0 / pool.water.y);
+      r = split.refracted;
       water = true;
     }
   } else {
     const float up = toSurfaceFromBelow(p, r);
-    const vec3 down = vec3(0.0, -1.0, 0.0);
-    const vec3 toAir = up > 0.0 ? refract(r, down, pool.water.y) : vec3(0.0);
-    if (dot(toAir, toAir) > 0.0) {  // out into the sky
-      weight = (1.0 - flatWaterReflectance(r, true)) * exp(-pool.extinction.rgb * up);
-      r = toAir;
+    const FlatWaterSplit split = flatWaterSplit(r, true);
+    if (up > 0.0 && dot(split.refracted, split.refracted) > 0.0) {  // out into the sky
+      weight = (1.0 - split.reflectance) * exp(-pool.extinction.rgb * up);
+      r = split.refracted;
       water = false;
     } else if (up > 0.0) {  // reflected whole
       weight = exp(-pool.extinction.rgb * up);
       p += up * r;
-      r = reflect(r, down);
+      r = split.reflected;
     }
   }
   float travel = 0.0;  // through the water

@@ -20,8 +20,8 @@ inline uint32_t sphereVertexCount(glm::uvec4 tessellation) { return tessellation
 // The one place where the scene's objects become shader parameters. Objects
 // whose lowest point is below `waterTop` come first and are counted in
 // count.zw: only they can meet a ray under the water surface (the default
-// counts every object in). Glass spheres are in, their index in
-// sphereMaterial.z.
+// counts every object in). Glass spheres are in, their index of refraction
+// in sphereMaterial.z.
 shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop = std::numeric_limits<float>::infinity());
 // Where `sphere` is among `objects`' spheres (their centre and radius are
 // copied from the same floats, so they match exactly), or
