@@ -13,6 +13,7 @@
 #include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "sim/water_scene.hpp"
+#include "test_scenes.hpp"
 
 namespace tp::test {
 namespace {
@@ -174,10 +175,11 @@ namespace tp::test {
 // reference tonemapped alike: closer than the frame it filters, and only
 // along edges (most pixels keep their bits). Off, the scene has no such pass.
 TEST_F(AntialiasingTest, MorphologicalFilterMovesTheFrameTowardsTheReference) {
-  scene::Scene glass = asTheReference(scene::defaultScene());
+  // Over the pool, where the silhouettes are.
+  scene::Scene glass = asTheReference(overThePool(scene::defaultScene()));
   glass.spheres.at(0).material = "glass";
   glass.spheres.at(0).center = {1.6f, glass.water.level + 0.5f, 0.0f};
-  for (const auto& [name, base] : {std::pair{"default scene", asTheReference(scene::defaultScene())},
+  for (const auto& [name, base] : {std::pair{"default scene", asTheReference(overThePool(scene::defaultScene()))},
                                    std::pair{"glass sphere by the pool", glass}}) {
     constexpr uint32_t frame = 10, kWidth = 320, kHeight = 180;
     const sim::WaterState water = sim::simulateWater(ctx(), base, frame);

@@ -7,12 +7,8 @@
 #include <cstdio>
 #include <random>
 
-#include "gpu/descriptors.hpp"
-#include "gpu/memory.hpp"
-#include "gpu/pipeline.hpp"
-#include "gpu/submit.hpp"
-#include "gpu/transfer.hpp"
 #include "gpu_test.hpp"
+#include "pool_shader_points.hpp"
 #include "shading/pool_model.hpp"
 #include "shared/pool.h"
 
@@ -123,25 +119,7 @@ TEST_F(BrickGpuTest, GpuAndCpuWallAlbedoAgreeToTheBit) {
   std::vector<glm::vec2> points(4096);
   for (auto& q : points) q = {along(rng), down(rng)};
   const uint32_t count = uint32_t(points.size());
-  auto pointBuffer = gpu::createFilledBuffer(ctx(), points, vk::BufferUsageFlagBits::eStorageBuffer,
-                                             gpu::MemoryUse::Upload, "wall points");
-  auto poolBuffer = gpu::createFilledBuffer(ctx(), &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
-                                            gpu::MemoryUse::Upload, "pool uniforms");
-  auto values = gpu::createBuffer(ctx(), count * sizeof(glm::vec4),
-                                  vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
-                                  gpu::MemoryUse::Device, "wall albedo");
-  auto pipeline = gpu::createComputePipeline(ctx(), "test_brick.comp", sizeof(uint32_t));
-  gpu::DescriptorArena arena(ctx());
-  gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
-    gpu::bindPipeline(cmd, pipeline, count);
-    gpu::DescriptorWrites()
-        .storageBuffer(0, pointBuffer)
-        .storageBuffer(1, values)
-        .uniformBuffer(2, poolBuffer)
-        .bind(cmd, pipeline, arena);
-    gpu::dispatchCovering(cmd, pipeline, count);
-  });
-  const auto gpuValues = gpu::readBufferAs<glm::vec4>(ctx(), values, gpu::access::computeWrite);
+  const auto gpuValues = poolShaderAtPoints(ctx(), "test_brick.comp", points, pool, 1);
   int mismatches = 0, mortar = 0;
   for (uint32_t i = 0; i < count; ++i) {
     const glm::vec3 cpu = shader::poolWallAlbedo(pool, points[i], glm::vec2(0.0f));

@@ -83,7 +83,7 @@ TEST(ExportCli, ObjHoldsTheGroundAndTheWaterAtTheFrame) {
     }
   }
   EXPECT_LT(worst, 1e-6);
-  EXPECT_GT(moved, 0.01);  // the drops are there
+  EXPECT_GT(moved, 0.005);  // the drops are there (flat water: 0)
   // Cell (i, j) sits at world ((i + 1/2) h - L/2, (j + 1/2) h - L/2).
   const float h = s.water.extent / float(n);
   EXPECT_FLOAT_EQ(c.vertices[first + waterVertex(n, 2, 1)].x, 2.5f * h - 0.5f * s.water.extent);

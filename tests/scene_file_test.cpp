@@ -99,6 +99,18 @@ TEST(SceneFile, ImpossibleValuesAreRefused) {
   EXPECT_NE(errorOf(R"({"pool": {"wall_pattern": "stone"}})").find("pool.wall_pattern must be one of"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"pool": {"mortar_fraction": 0.6}})").find("pool.mortar_fraction"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"floor_pattern": "marble"}})").find("pool.floor_pattern must be one of"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"pool": {"tile_size": 0.1, "grout_width": 0.1}})")
+                .find("pool.grout_width must be less than pool.tile_size"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"ground": {"pattern": "grass"}})").find("ground.pattern must be one of"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"ground": {"paver_depth": 0.05, "joint_width": 0.05}})")
+                .find("ground.joint_width must be less than ground.paver_width and ground.paver_depth"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"ground": {"coping_width": -0.1}})").find("ground.coping_width"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"ground": {"lawn_albedo": [0, -1, 0]}})").find("ground.lawn_albedo must not be negative"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"pool": {"brick_width": 0.01, "brick_height": 0.1, "mortar_fraction": 0.2}})")
                 .find("must be less than pool.brick_width"),
             std::string::npos);

@@ -449,7 +449,7 @@ TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
   ScratchDir dir;
   const std::string shot = dir.file("shot.png"), saved = dir.file("saved.json"), png = dir.file("render.png");
   const ProcessResult r = runViewer(
-      "--size 160x90 --frames 60 --script 12:drop:70,70 --script-resize 20:240x160 "
+      "--size 160x90 --frames 60 --script 12:drop:80,50 --script-resize 20:240x160 "
       "--script 25:set:render.refraction=apparent --script 30:set:ao.preset=fast "
       "--script 35:set:water.ior=1.4 --script 59:save-scene:" +
           saved + " --profile --screenshot " + shot,

@@ -14,6 +14,7 @@
 #include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "sim/water_scene.hpp"
+#include "test_scenes.hpp"
 
 namespace tp::test {
 namespace {
@@ -93,7 +94,7 @@ TEST_F(WaterScatteringGpuTest, WhatTheWaterScattersMatchesTheReference) {
     scene::Scene scene;
     double addedBound;
   };
-  const scene::Scene under = underTheSurface(), above = asTheReference(scene::defaultScene());
+  const scene::Scene under = underTheSurface(), above = asTheReference(overThePool(scene::defaultScene()));
   scene::Scene underNoShadows = under, aboveNoShadows = above;
   underNoShadows.render.shadows = aboveNoShadows.render.shadows = false;
   for (const Case& c : {Case{"under the surface, no shadows", underNoShadows, 0.03},

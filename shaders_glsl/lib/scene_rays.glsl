@@ -191,7 +191,7 @@ vec3 backdrop(vec3 p, vec3 r) {
   if (end.met == kMetNothing) {
     seen = sky(r);
   } else if (end.met == kMetWall) {
-    seen = objectRadiance(frame, pool.wallAlbedo.w > 0.5 ? pool.brickAlbedo.rgb : pool.wallAlbedo.rgb, end.normal, 1.0);
+    seen = objectRadiance(frame, poolWallMeanAlbedo(pool), end.normal, 1.0);
   } else if (water) {
     seen = poolFloorRadiance(pool, frame, q, end.normal, vec2(0.0), 1.0);
   } else {

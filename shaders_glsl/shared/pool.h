@@ -1,5 +1,5 @@
-// The pool: a square hole in the ground, its inner walls (plain, or brick
-// with noise dirt), and a tiled floor shaped by value-noise terrain. A uniform buffer filled once per scene
+// The pool: a square hole in the ground, its inner walls (plain, tiled, or
+// brick with noise dirt), and a tiled or checkered floor shaped by value-noise terrain. A uniform buffer filled once per scene
 // (render/pool_model.cpp); the floor's height function is shared with C++.
 #ifndef TP_SHARED_POOL_H
 #define TP_SHARED_POOL_H
@@ -7,6 +7,7 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/noise.h"
+#include "shared/surface_pattern.h"
 
 TP_BEGIN
 
@@ -14,8 +15,8 @@ struct PoolParams {
   vec4 box;  // x: half size of the square pool, y: rim height, z: mean floor depth below the rim, w: terrain amplitude
   vec4 terrain;        // x: terrain frequency (1/m), y: persistence, z: lowest floor vertex, w: highest (metres)
   uvec4 noise;         // x: octaves, y: seed, z: the floor mesh's vertices per side; w unused
-  vec4 wallAlbedo;     // rgb: of plain walls; w: 1 for brick walls, 0 for plain
-  GroundParams tiles;  // the floor's checker: plane.z tile size, albedoA, albedoB
+  vec4 wallAlbedo;     // rgb: of plain walls; w: 0 plain, 1 brick, 2 tiled as the floor
+  GroundParams tiles;  // the floor's checker or tiles (shared/surface_pattern.h), and the tiled walls'
   vec4 brick;          // xy: 1 / (brick width, brick height) in metres; zw: half the joint in brick widths, heights
   vec4 brickAlbedo;    // rgb; w: the dirt (0: none, 1: black where the dirt noise is 1)
   vec4 mortarAlbedo;   // rgb; w unused
@@ -58,11 +59,15 @@ TP_INLINE vec2 poolWallCoordinates(PoolParams p, vec3 position, vec3 normal) {
   return vec2(abs(normal.x) > 0.5f ? position.z : position.x, p.box.y - position.y);
 }
 
+const float kPoolWallPlain = 0.0f, kPoolWallBrick = 1.0f, kPoolWallTiles = 2.0f;
+
 // The walls' albedo at wall coordinates `wall` (metres) over a footprint
-// (metres; 0 point-samples): plain, or brick and mortar by the fraction of
-// the footprint on brick, each brick with its own tone, darkened by dirt.
+// (metres; 0 point-samples): plain; tiled as the floor, the rows from the
+// rim down; or brick and mortar by the fraction of the footprint on brick,
+// each brick with its own tone, darkened by dirt.
 TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
-  if (p.wallAlbedo.w == 0.0f) return vec3(p.wallAlbedo);
+  if (p.wallAlbedo.w == kPoolWallPlain) return vec3(p.wallAlbedo);
+  if (p.wallAlbedo.w == kPoolWallTiles) return patternAlbedo(p.tiles, wall, footprint);
   TP_PRECISE vec2 q = wall * vec2(p.brick);
   TP_PRECISE vec2 qFootprint = footprint * vec2(p.brick);
   TP_PRECISE float onBrick = brickFraction(q, qFootprint, vec2(p.brick.z, p.brick.w));
@@ -77,13 +82,20 @@ TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
   return albedo;
 }
 
+// The walls' albedo seen from afar (by rays that do not filter the pattern).
+TP_INLINE vec3 poolWallMeanAlbedo(PoolParams p) {
+  if (p.wallAlbedo.w == kPoolWallBrick) return vec3(p.brickAlbedo);
+  if (p.wallAlbedo.w == kPoolWallTiles) return patternMeanAlbedo(p.tiles);
+  return vec3(p.wallAlbedo);
+}
+
 // The lowest the floor can be: where the walls end.
 TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.box.w; }
 
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 272);
+static_assert(sizeof(tp::shader::PoolParams) == 400);
 #endif
 
 #endif

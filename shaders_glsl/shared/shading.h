@@ -12,39 +12,18 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/pool.h"
+#include "shared/surface_pattern.h"
 #include "shared/water_surface.h"
 
 TP_BEGIN
 
-// Integral from 0 to x of the square wave that is +1 on [0,1) and -1 on [1,2), period 2.
-TP_INLINE vec2 squareWaveIntegral(vec2 x) {
-  vec2 f = fract(x * 0.5f);
-  return 2.0f * (f - 2.0f * max(f - 0.5f, 0.0f));
-}
-
-// Fraction of the footprint [p - w/2, p + w/2]^2 on odd squares (0..1): the box
-// filter is separable, so the mean of the product of the two square waves is
-// the product of their means. Filtering keeps the checker from aliasing; a
-// zero footprint point-samples it (the reference filters by its samples).
-TP_INLINE float filteredChecker(vec2 p, vec2 w) {
-  if (w.x <= 0.0f || w.y <= 0.0f) {
-    vec2 f = fract(p * 0.5f);
-    return (f.x < 0.5f) != (f.y < 0.5f) ? 1.0f : 0.0f;
-  }
-  w = max(w, vec2(1e-6f));
-  vec2 wave = (squareWaveIntegral(p + 0.5f * w) - squareWaveIntegral(p - 0.5f * w)) / w;
-  return 0.5f - 0.5f * wave.x * wave.y;
-}
-
-// Radiance leaving the checkered ground at world xz (pixel footprint in
-// metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
+// Radiance leaving the ground (or the pool's floor: its tiles) at world xz
+// (pixel footprint in metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
 // the share of its disc in view, sunVisibility, times the caustics under
 // water) and by the sky's irradiance on a surface with normal n (the sky
 // above the horizon: the ground hides the rest).
 TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
-  vec2 p = xz / ground.plane.z;
-  float odd = filteredChecker(p, footprint / ground.plane.z);
-  vec3 albedo = mix(vec3(ground.albedoA), vec3(ground.albedoB), odd);
+  vec3 albedo = groundAlbedo(ground, xz, footprint);
   vec3 irradiance =
       sunScale * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + sh9Irradiance(frame.skySh, n);
   return albedo / kPi * irradiance;

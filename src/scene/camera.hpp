@@ -9,9 +9,9 @@ namespace tp::scene {
 // (seconds from the scene's start).
 struct CameraKeyframe {
   float time = 0.0f;
-  glm::vec3 position{3.2f, 2.4f, 4.6f};
-  glm::vec3 target{0.0f, 0.3f, 0.0f};
-  float fovYDegrees = 50.0f;
+  glm::vec3 position{3.4f, 1.45f, 4.3f};
+  glm::vec3 target{0.0f, -0.25f, 0.0f};
+  float fovYDegrees = 55.0f;
   bool operator==(const CameraKeyframe&) const = default;
 };
 
@@ -20,10 +20,10 @@ struct CameraKeyframe {
 inline const std::vector<std::string> kCameraInterpolation{"linear", "catmull_rom"};
 
 struct Camera {
-  glm::vec3 position{3.2f, 2.4f, 4.6f};
-  glm::vec3 target{0.0f, 0.3f, 0.0f};
+  glm::vec3 position{3.4f, 1.45f, 4.3f};
+  glm::vec3 target{0.0f, -0.25f, 0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fovYDegrees = 50.0f;
+  float fovYDegrees = 55.0f;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
   // The camera moves along `path` (held before its first key and after its

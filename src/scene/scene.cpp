@@ -127,6 +127,18 @@ void validateGround(const Scene& s) {
   requireRange(s.ground.checkerSize, 1e-4f, 1e4f, "ground.checker_size");
   requireNonNegative(s.ground.albedoA, "ground.albedo_a");
   requireNonNegative(s.ground.albedoB, "ground.albedo_b");
+  requireOneOf(s.ground.pattern, choices::kGroundPattern, "ground.pattern");
+  requireRange(s.ground.paverWidth, 1e-3f, 1e3f, "ground.paver_width");
+  requireRange(s.ground.paverDepth, 1e-3f, 1e3f, "ground.paver_depth");
+  requireRange(s.ground.jointWidth, 0.0f, 1e3f, "ground.joint_width");
+  if (!(s.ground.jointWidth < std::min(s.ground.paverWidth, s.ground.paverDepth))) {
+    throw std::runtime_error("ground.joint_width must be less than ground.paver_width and ground.paver_depth");
+  }
+  requireNonNegative(s.ground.jointAlbedo, "ground.joint_albedo");
+  requireRange(s.ground.copingWidth, 0.0f, 1e3f, "ground.coping_width");
+  requireNonNegative(s.ground.copingAlbedo, "ground.coping_albedo");
+  requireRange(s.ground.terraceHalfExtent, 0.0f, 1e5f, "ground.terrace_half_extent");
+  requireNonNegative(s.ground.lawnAlbedo, "ground.lawn_albedo");
 }
 
 void validateRender(const Scene& s) {
@@ -174,6 +186,12 @@ void validatePool(const Scene& s) {
   requireRange(s.pool.tileSize, 1e-4f, 1e3f, "pool.tile_size");
   requireNonNegative(s.pool.tileAlbedoA, "pool.tile_albedo_a");
   requireNonNegative(s.pool.tileAlbedoB, "pool.tile_albedo_b");
+  requireOneOf(s.pool.floorPattern, choices::kFloorPattern, "pool.floor_pattern");
+  requireRange(s.pool.groutWidth, 0.0f, 1e3f, "pool.grout_width");
+  if (!(s.pool.groutWidth < s.pool.tileSize)) {
+    throw std::runtime_error("pool.grout_width must be less than pool.tile_size");
+  }
+  requireNonNegative(s.pool.groutAlbedo, "pool.grout_albedo");
   requireRange(s.pool.wallSpecular, 0.0f, 1.0f, "pool.wall_specular");
   requireRange(s.pool.wallRoughness, 0.0f, 1.0f, "pool.wall_roughness");
   requireRange(s.terrain.amplitude, 0.0f, 2.0f * s.pool.depth, "terrain.amplitude");

@@ -20,7 +20,9 @@ inline const std::vector<std::string> kAoBlur{"off", "box", "bilateral"};
 inline const std::vector<std::string> kAoResolution{"full", "half"};
 inline const std::vector<std::string> kAoPreset{"fast", "balanced", "quality", "baseline"};
 inline const std::vector<std::string> kNoise{"value", "value_cubic", "gradient", "simplex"};
-inline const std::vector<std::string> kWallPattern{"plain", "brick"};
+inline const std::vector<std::string> kWallPattern{"plain", "brick", "tiles"};
+inline const std::vector<std::string> kFloorPattern{"checker", "tiles"};
+inline const std::vector<std::string> kGroundPattern{"checker", "terrace"};
 inline const std::vector<std::string> kMaterial{"lambert", "glass"};
 }  // namespace choices
 
@@ -29,8 +31,8 @@ inline const std::vector<std::string> kMaterial{"lambert", "glass"};
 // horizon. They hide the sky and its glow, never the sun (which lights the
 // scene regardless).
 struct Clouds {
-  float coverage = 0.0f;  // 0: a clear sky, 1: overcast
-  float scale = 1.5f;     // noise frequency on the cloud plane, per unit of its height
+  float coverage = 0.5f;  // 0: a clear sky, 1: overcast
+  float scale = 0.6f;     // noise frequency on the cloud plane, per unit of its height
   unsigned octaves = 5;
   float persistence = 0.5f;
   unsigned seed = 3;
@@ -61,7 +63,7 @@ struct Sky {
   float intensity = 1.0f;        // the image's radiance scaled by this
   // Aerial perspective (shared/haze.h): metres of air over which a surface's
   // light gives way to the horizon's by 1 - 1/e; 0, clear air.
-  float hazeDistance = 0.0f;
+  float hazeDistance = 150.0f;
   Clouds clouds;
   bool operator==(const Sky&) const = default;
 };
@@ -69,28 +71,43 @@ struct Sky {
 struct Ground {
   float halfExtent = 100.0f;
   float height = 0.0f;
+  // checker: squares of albedoA and albedoB; terrace: pavers in running bond,
+  // each its own tone between albedoA and albedoB, a coping of stones round
+  // the pool, a lawn past the terrace (shared/surface_pattern.h).
+  std::string pattern = "terrace";
   float checkerSize = 1.0f;
-  glm::vec3 albedoA{0.62f, 0.60f, 0.56f};
-  glm::vec3 albedoB{0.22f, 0.22f, 0.24f};
+  glm::vec3 albedoA{0.42f, 0.37f, 0.30f};
+  glm::vec3 albedoB{0.31f, 0.28f, 0.24f};
+  float paverWidth = 0.6f;    // metres along x, joint included
+  float paverDepth = 0.4f;    // metres along z, joint included
+  float jointWidth = 0.012f;  // metres, between pavers and between coping stones
+  glm::vec3 jointAlbedo{0.30f, 0.29f, 0.27f};
+  float copingWidth = 0.3f;  // metres out from the pool's edge; 0: none
+  glm::vec3 copingAlbedo{0.68f, 0.66f, 0.62f};
+  float terraceHalfExtent = 6.0f;  // metres; past it the lawn; 0: the terrace runs to the edge
+  glm::vec3 lawnAlbedo{0.14f, 0.22f, 0.07f};
   bool operator==(const Ground&) const = default;
 };
 
 // The pool that holds the water: a square hole in the ground, as wide as the
-// water, with inner walls (plain, or running-bond brick with noise dirt) and a
-// tiled floor shaped by value-noise terrain.
+// water, with inner walls (plain, tiled, or running-bond brick with noise
+// dirt) and a tiled or checkered floor shaped by value-noise terrain.
 struct Pool {
   float depth = 1.2f;                         // mean floor depth below the rim (the ground)
   glm::vec3 wallAlbedo{0.55f, 0.56f, 0.58f};  // of plain walls
-  std::string wallPattern = "plain";          // plain | brick
+  std::string wallPattern = "tiles";          // plain | brick | tiles (as the floor)
   float brickWidth = 0.24f;                   // metres, joint included (courses repeat every brick width along)
   float brickHeight = 0.08f;                  // metres, joint included
   float mortarFraction = 0.15f;               // the joints' width as a fraction of the brick height
   glm::vec3 brickAlbedo{0.55f, 0.24f, 0.16f};
   glm::vec3 mortarAlbedo{0.62f, 0.60f, 0.55f};
-  float dirt = 0.3f;  // how much noise darkens the bricks (0: clean, 1: black at worst)
-  float tileSize = 0.25f;
-  glm::vec3 tileAlbedoA{0.70f, 0.78f, 0.80f};
-  glm::vec3 tileAlbedoB{0.35f, 0.52f, 0.60f};
+  float dirt = 0.3f;                           // how much noise darkens the bricks (0: clean, 1: black at worst)
+  std::string floorPattern = "tiles";          // checker (squares of tileAlbedoA and B) | tiles
+  float tileSize = 0.2f;                       // metres, grout included
+  glm::vec3 tileAlbedoA{0.34f, 0.64f, 0.72f};  // the tiles' tones run from A to B, one per tile
+  glm::vec3 tileAlbedoB{0.20f, 0.50f, 0.64f};
+  float groutWidth = 0.014f;  // metres
+  glm::vec3 groutAlbedo{0.80f, 0.83f, 0.82f};
   float wallSpecular = 0.0f;  // the walls' glossy lobe's share (shared/glossy.h)
   float wallRoughness = 0.5f;
   bool operator==(const Pool&) const = default;
@@ -180,12 +197,17 @@ struct Water {
   // The shafts in the scattered sun light: the path cut into this many
   // pieces, each shadowed at its middle; 0: unshadowed (and cheaper).
   unsigned scatteringShadowPieces = 4;
-  std::vector<Drop> drops{{-0.8f, -0.5f, 0.35f, 0.05f}, {0.9f, 0.6f, 0.25f, -0.04f}, {0.2f, 1.2f, 0.2f, 0.03f}};
+  // Someone just jumped in: four drops about one point, of alternating sign,
+  // sum to a trough ringed by crests and troughs; three small splashes round
+  // it. By frame 60 the rings have spread into calm ripples.
+  std::vector<Drop> drops{{-0.35f, 0.25f, 1.2f, 0.016f}, {-0.35f, 0.25f, 0.9f, -0.036f}, {-0.35f, 0.25f, 0.6f, 0.04f},
+                          {-0.35f, 0.25f, 0.3f, -0.04f}, {0.45f, 0.95f, 0.09f, 0.012f},  {-1.25f, -0.35f, 0.08f, 0.01f},
+                          {-0.1f, 1.45f, 0.08f, -0.01f}};
   bool operator==(const Water&) const = default;
 };
 
 struct Render {
-  float exposure = 0.8f;
+  float exposure = 0.6f;
   // How the water shows what is under it: "accurate" casts each refracted ray
   // against the pool and spheres; "apparent" is the original's approximation,
   // reading the frame's own image of the pool at the refracted ray's mean-depth point.
@@ -237,7 +259,8 @@ struct Scene {
   Water water;
   Pool pool;
   Terrain terrain;
-  std::vector<Sphere> spheres{{{0.9f, -0.25f, -0.7f}, 0.45f, {0.80f, 0.32f, 0.20f}}};
+  // A red ball afloat.
+  std::vector<Sphere> spheres{{.center = {0.9f, -0.2f, -0.7f}, .radius = 0.4f, .albedo = {0.75f, 0.12f, 0.06f}}};
   std::vector<Box> boxes;
   Render render;
   Ao ao;

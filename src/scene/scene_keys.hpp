@@ -62,9 +62,18 @@ template <typename R>
 void visitGroundKeys(R& r, Ground& x) {
   r.number("half_extent", x.halfExtent);
   r.number("height", x.height);
+  r.choice("pattern", x.pattern, choices::kGroundPattern);
   r.number("checker_size", x.checkerSize);
   r.color("albedo_a", x.albedoA);
   r.color("albedo_b", x.albedoB);
+  r.number("paver_width", x.paverWidth);
+  r.number("paver_depth", x.paverDepth);
+  r.number("joint_width", x.jointWidth);
+  r.color("joint_albedo", x.jointAlbedo);
+  r.number("coping_width", x.copingWidth);
+  r.color("coping_albedo", x.copingAlbedo);
+  r.number("terrace_half_extent", x.terraceHalfExtent);
+  r.color("lawn_albedo", x.lawnAlbedo);
 }
 
 template <typename R>
@@ -104,9 +113,12 @@ void visitPoolKeys(R& r, Pool& x) {
   r.color("brick_albedo", x.brickAlbedo);
   r.color("mortar_albedo", x.mortarAlbedo);
   r.number("dirt", x.dirt);
+  r.choice("floor_pattern", x.floorPattern, choices::kFloorPattern);
   r.number("tile_size", x.tileSize);
   r.color("tile_albedo_a", x.tileAlbedoA);
   r.color("tile_albedo_b", x.tileAlbedoB);
+  r.number("grout_width", x.groutWidth);
+  r.color("grout_albedo", x.groutAlbedo);
   r.number("wall_specular", x.wallSpecular);
   r.number("wall_roughness", x.wallRoughness);
 }

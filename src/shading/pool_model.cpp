@@ -18,6 +18,16 @@ float causticsReach(const scene::Scene& scene, uint32_t texels) {
   return half - 0.5f * scene.water.extent / float(scene.water.grid) - half / float(texels);
 }
 
+namespace {
+
+float wallPatternCode(const std::string& pattern) {
+  if (pattern == "brick") return shader::kPoolWallBrick;
+  if (pattern == "tiles") return shader::kPoolWallTiles;
+  return shader::kPoolWallPlain;
+}
+
+}  // namespace
+
 PoolModel poolModel(const scene::Scene& scene) {
   const scene::Pool& p = scene.pool;
   const scene::Terrain& t = scene.terrain;
@@ -25,10 +35,15 @@ PoolModel poolModel(const scene::Scene& scene) {
       .box = {0.5f * scene.water.extent, scene.ground.height, p.depth, t.amplitude},
       .terrain = {t.frequency, t.persistence, 0.0f, 0.0f},
       .noise = {t.octaves, t.seed, kPoolFloorGrid, 0u},
-      .wallAlbedo = glm::vec4(p.wallAlbedo, p.wallPattern == "brick" ? 1.0f : 0.0f),
+      .wallAlbedo = glm::vec4(p.wallAlbedo, wallPatternCode(p.wallPattern)),
+      // Stacked square tiles, or the checker; no coping or lawn.
       .tiles = {.plane = {0.0f, 0.0f, p.tileSize, 0.0f},
-                .albedoA = glm::vec4(p.tileAlbedoA, 0.0f),
-                .albedoB = glm::vec4(p.tileAlbedoB, 0.0f)},
+                .albedoA = glm::vec4(p.tileAlbedoA, p.floorPattern == "tiles" ? 1.0f : 0.0f),
+                .albedoB = glm::vec4(p.tileAlbedoB, 0.0f),
+                .tiles = glm::vec4(glm::vec2(1.0f / p.tileSize), glm::vec2(0.5f * p.groutWidth / p.tileSize)),
+                .jointAlbedo = glm::vec4(p.groutAlbedo, 0.0f),
+                .copingAlbedo = glm::vec4(0.0f),
+                .lawnAlbedo = glm::vec4(0.0f)},
       // The joint is mortarFraction of the brick height wide, between courses and between bricks.
       .brick = {1.0f / p.brickWidth, 1.0f / p.brickHeight, 0.5f * p.mortarFraction * p.brickHeight / p.brickWidth,
                 0.5f * p.mortarFraction},

@@ -8,6 +8,7 @@
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
+#include "shared/surface_pattern.h"
 
 namespace tp::render {
 namespace {
@@ -22,18 +23,20 @@ std::vector<glm::vec2> planarUvs(const std::vector<glm::vec3>& positions, float 
 
 glm::vec3 faceNormal(glm::vec3 a, glm::vec3 b, glm::vec3 c) { return glm::normalize(glm::cross(b - a, c - a)); }
 
-scene::ShadedMesh groundMesh(scene::Mesh mesh, const scene::Ground& g) {
+scene::ShadedMesh groundMesh(scene::Mesh mesh, const scene::Scene& scene) {
+  const scene::Ground& g = scene.ground;
   scene::ShadedMesh m;
   m.mesh = std::move(mesh);
   m.normals.assign(m.mesh.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
   m.uvs = planarUvs(m.mesh.positions, g.halfExtent);
-  m.material.albedo = 0.5f * (g.albedoA + g.albedoB);  // the checker's mean
+  m.material.albedo = shader::patternMeanAlbedo(groundParams(scene));
   return m;
 }
 
 // Quads of four vertices each (addQuad's order: top of one edge, its bottom,
 // the other edge's bottom, its top): each wall's texture spans it.
-scene::ShadedMesh wallsMesh(scene::Mesh mesh, const scene::Pool& pool) {
+scene::ShadedMesh wallsMesh(scene::Mesh mesh, const scene::Scene& scene) {
+  const scene::Pool& pool = scene.pool;
   scene::ShadedMesh m;
   m.mesh = std::move(mesh);
   const auto& p = m.mesh.positions;
@@ -41,7 +44,7 @@ scene::ShadedMesh wallsMesh(scene::Mesh mesh, const scene::Pool& pool) {
     m.normals.insert(m.normals.end(), 4, faceNormal(p[q], p[q + 1], p[q + 2]));
     m.uvs.insert(m.uvs.end(), {{0.0f, 1.0f}, {0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}});
   }
-  m.material.albedo = pool.wallPattern == "brick" ? pool.brickAlbedo : pool.wallAlbedo;
+  m.material.albedo = shader::poolWallMeanAlbedo(poolParams(scene));
   m.material.specular = pool.wallSpecular;
   m.material.roughness = pool.wallRoughness;
   return m;
@@ -53,7 +56,7 @@ scene::ShadedMesh floorMesh(scene::Mesh mesh, const scene::Scene& scene) {
   m.mesh = std::move(mesh);
   for (const glm::vec4& v : pool.floorVertices) m.normals.push_back(glm::vec3(v));  // pool_floor.vert's
   m.uvs = planarUvs(m.mesh.positions, pool.params.box.x);
-  m.material.albedo = 0.5f * (scene.pool.tileAlbedoA + scene.pool.tileAlbedoB);  // the tiles' mean
+  m.material.albedo = shader::patternMeanAlbedo(pool.params.tiles);
   return m;
 }
 
@@ -138,9 +141,9 @@ std::vector<scene::ShadedMesh> shadedSceneMeshes(const scene::Scene& scene, cons
     // sceneMeshes' names say what each mesh is ("sphere3": the fourth sphere).
     const std::string& name = mesh.name;
     if (name == "ground") {
-      shaded.push_back(groundMesh(std::move(mesh), scene.ground));
+      shaded.push_back(groundMesh(std::move(mesh), scene));
     } else if (name == "pool_walls") {
-      shaded.push_back(wallsMesh(std::move(mesh), scene.pool));
+      shaded.push_back(wallsMesh(std::move(mesh), scene));
     } else if (name == "pool_floor") {
       shaded.push_back(floorMesh(std::move(mesh), scene));
     } else if (name.starts_with("sphere")) {

@@ -61,9 +61,16 @@ shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene) {
 
 shader::GroundParams groundParams(const scene::Scene& scene) {
   const scene::Ground& g = scene.ground;
+  const bool terrace = g.pattern == "terrace";
+  // The coping's joints are as wide as the pavers'.
   return {.plane = {g.halfExtent, g.height, g.checkerSize, hasPool(scene) ? 0.5f * scene.water.extent : 0.0f},
-          .albedoA = glm::vec4(g.albedoA, 0.0f),
-          .albedoB = glm::vec4(g.albedoB, 0.0f)};
+          .albedoA = glm::vec4(g.albedoA, terrace ? 1.0f : 0.0f),
+          .albedoB = glm::vec4(g.albedoB, 0.5f),  // running bond
+          .tiles = {1.0f / g.paverWidth, 1.0f / g.paverDepth, 0.5f * g.jointWidth / g.paverWidth,
+                    0.5f * g.jointWidth / g.paverDepth},
+          .jointAlbedo = glm::vec4(g.jointAlbedo, terrace ? g.copingWidth : 0.0f),
+          .copingAlbedo = glm::vec4(g.copingAlbedo, terrace ? g.terraceHalfExtent : 0.0f),
+          .lawnAlbedo = glm::vec4(g.lawnAlbedo, 0.5f * g.jointWidth)};
 }
 
 namespace {
