@@ -100,7 +100,10 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
   const float outward = max(abs(xz.x), abs(xz.y));
   const float across = onXSide ? footprint.x : footprint.y;
   const float hole = g.plane.w, coping = g.jointAlbedo.w, terrace = g.copingAlbedo.w;
-  if (hole > 0.0f && coping > 0.0f) {
+  // Lavapipe runs both sides of an if for every pixel: TP_ONLY_IF skips the
+  // coping's and the lawn's terms where no pixel of a group is on them.
+  const float onCoping = hole > 0.0f && coping > 0.0f ? bandShare(outward, across, hole, hole + coping) : 0.0f;
+  TP_ONLY_IF(onCoping > 0.0f) {
     // Whole stones along each side, about kCopingStoneLength widths long,
     // with joints on the pool's corners: each corner is one square stone.
     TP_PRECISE float stones = max(1.0f, floor(2.0f * hole / (kCopingStoneLength * coping) + 0.5f));
@@ -109,14 +112,15 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
     TP_PRECISE float onStone =
         brickPulse(along / stone, (onXSide ? footprint.y : footprint.x) / stone, g.lawnAlbedo.w / stone);
     TP_PRECISE vec3 copingAlbedo = vec3(g.jointAlbedo) + (vec3(g.copingAlbedo) - vec3(g.jointAlbedo)) * onStone;
-    albedo = mix(albedo, copingAlbedo, bandShare(outward, across, hole, hole + coping));
+    albedo = mix(albedo, copingAlbedo, onCoping);
   }
-  if (terrace > 0.0f) {
+  const float onLawn = terrace > 0.0f ? bandShare(outward, across, terrace, 1e30f) : 0.0f;
+  TP_ONLY_IF(onLawn > 0.0f) {
     TP_PRECISE float spread = clamp(1.0f - 2.0f * kLawnFrequency * max(footprint.x, footprint.y), 0.0f, 1.0f);
     TP_PRECISE float grass =
         fractalNoise01(TP_NOISE_GRADIENT, xz * kLawnFrequency, kLawnSeed, kLawnOctaves, kLawnPersistence);
     TP_PRECISE vec3 lawn = vec3(g.lawnAlbedo) * (1.0f - kLawnVariation * (0.5f + spread * (grass - 0.5f)));
-    albedo = mix(albedo, lawn, bandShare(outward, across, terrace, 1e30f));
+    albedo = mix(albedo, lawn, onLawn);
   }
   return albedo;
 }
