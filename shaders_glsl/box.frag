@@ -21,8 +21,8 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
-  color = vec4(objectRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic) * toCamera +
+  color = vec4(lambertRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  writeGbuffer(frame, n, objectRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0) * toCamera);
+  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0) * toCamera);
 }

@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The checkered ground plane (shared/shading.h).
+// The ground plane and its pattern (shared/shading.h): never in the pool,
+// so its sun shadows are those of the open air.
 #include "shared/shading.h"
 #include "lib/gbuffer.glsl"
 
@@ -14,6 +15,8 @@ layout(push_constant) uniform Push { GroundParams ground; };
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
-  color = vec4(groundRadiance(ground, frame, worldPosition.xz, footprint, n, frameSunShare(worldPosition)), 1.0);
-  writeGbuffer(frame, n, groundRadiance(ground, withoutSun(frame), worldPosition.xz, footprint, n, 1.0));
+  // The pattern once, for the colour and the ambient part alike.
+  const vec3 albedo = groundAlbedo(ground, worldPosition.xz, footprint);
+  color = vec4(lambertRadiance(frame, albedo, n, frameOpenAirSunShare(worldPosition)), 1.0);
+  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, 1.0));
 }

@@ -226,6 +226,36 @@ TEST(SunShadow, ASpheresOwnWaterlineIsNotItsShadow) {
   }
 }
 
+// The ground's shadows (openAirSunVisibility, one straight leg past the
+// spheres and boxes) are sunVisibility's wherever a point is out of the
+// pool: the same bits over the terrace around a pool, a sphere and a box,
+// in their umbrae, penumbrae and the open.
+TEST(SunShadow, OutOfThePoolTheOpenAirLegIsTheWholeAnswer) {
+  ShadowCasters c = casters(float(glm::radians(1.0)));
+  c.sun = glm::vec4(c.sun.x, 1.0f, 1.0f, 1.0f);
+  c.spheres[0] = glm::vec4(2.2f, 0.6f, 0.4f, 0.45f);
+  c.boxCenter[0] = glm::vec4(-2.3f, 0.3f, -0.5f, glm::radians(20.0f));
+  c.boxHalfSize[0] = glm::vec4(0.3f, 0.3f, 0.5f, 0.0f);
+  c.pool = glm::vec4(1.5f, 0.15f, -0.15f, 1.333f);
+  const glm::vec3 toSun = glm::vec3(sunTowards(35.0, 60.0));
+  int points = 0, shaded = 0, penumbra = 0;
+  for (int i = 0; i <= 120; ++i) {
+    for (int j = 0; j <= 120; ++j) {
+      const glm::vec3 p(-6.0f + 0.1f * float(i), 0.15f, -6.0f + 0.1f * float(j));
+      if (std::max(std::abs(p.x), std::abs(p.z)) <= 1.5f) continue;  // the pool's hole
+      const float open = shader::openAirSunVisibility(c, p, toSun);
+      EXPECT_EQ(open, shader::sunVisibility(c, p, toSun)) << p.x << " " << p.z;
+      ++points;
+      shaded += open < 1.0f;
+      penumbra += open > 0.0f && open < 1.0f;
+    }
+  }
+  // The grid reaches into both shadows and their penumbrae.
+  EXPECT_GT(shaded, 40);
+  EXPECT_GT(penumbra, 10);
+  std::printf("%d points out of the pool, %d in a shadow, %d in a penumbra\n", points, shaded, penumbra);
+}
+
 // The boxes' shadow rays' slab test against the renderer's own box cast
 // (shared/objects.h, which the reference-against-raster tests check): the
 // same verdict for rays from all around a turned box, and from inside it.

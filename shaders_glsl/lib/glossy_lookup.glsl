@@ -6,6 +6,7 @@
 #ifndef TP_LIB_GLOSSY_LOOKUP
 #define TP_LIB_GLOSSY_LOOKUP
 #include "shared/glossy.h"
+#include "shared/specialization.h"
 
 vec3 glossyEnvironment(sampler2D map, vec3 r, float roughness) {
   const uint base = uint(textureSize(map, 0).x);
@@ -17,7 +18,7 @@ vec3 glossyEnvironment(sampler2D map, vec3 r, float roughness) {
 // (specular) > 0, the glossy lobe about the mirror direction of `incoming`
 // (the ray arriving at it) in normal n, roughness material.y.
 vec3 glossyRadiance(sampler2D map, vec3 diffuse, vec3 incoming, vec3 n, vec2 material) {
-  if (material.x <= 0.0) return diffuse;
+  if (!kGlossySurfaces || material.x <= 0.0) return diffuse;
   return glossyMix(diffuse, glossyEnvironment(map, reflect(incoming, n), material.y), material.x);
 }
 

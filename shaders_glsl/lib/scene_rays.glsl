@@ -191,7 +191,7 @@ vec3 backdrop(vec3 p, vec3 r) {
   if (end.met == kMetNothing) {
     seen = sky(r);
   } else if (end.met == kMetWall) {
-    seen = objectRadiance(frame, poolWallMeanAlbedo(pool), end.normal, 1.0);
+    seen = lambertRadiance(frame, poolWallMeanAlbedo(pool), end.normal, 1.0);
   } else if (water) {
     seen = poolFloorRadiance(pool, frame, q, end.normal, vec2(0.0), 1.0);
   } else {
@@ -220,7 +220,7 @@ vec3 objectSeen(ObjectHit object, vec3 p, vec3 dir, float sunShare) {
 #ifdef TP_GLASS
   if (object.glass > 0.0) return glassSeen(object, p, dir);
 #endif
-  return glossyRadiance(glossyMap, objectRadiance(frame, object.albedo, object.normal, sunShare), dir, object.normal,
+  return glossyRadiance(glossyMap, lambertRadiance(frame, object.albedo, object.normal, sunShare), dir, object.normal,
                         object.material);
 }
 

@@ -7,6 +7,7 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/noise.h"
+#include "shared/specialization.h"
 #include "shared/surface_pattern.h"
 
 TP_BEGIN
@@ -67,7 +68,8 @@ const float kPoolWallPlain = 0.0f, kPoolWallBrick = 1.0f, kPoolWallTiles = 2.0f;
 // each brick with its own tone, darkened by dirt.
 TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
   if (p.wallAlbedo.w == kPoolWallPlain) return vec3(p.wallAlbedo);
-  if (p.wallAlbedo.w == kPoolWallTiles) return patternAlbedo(p.tiles, wall, footprint);
+  // Without brick walls in the scene, no brick code (shared/specialization.h).
+  if (p.wallAlbedo.w == kPoolWallTiles || !kBrickWalls) return patternAlbedo(p.tiles, wall, footprint);
   TP_PRECISE vec2 q = wall * vec2(p.brick);
   TP_PRECISE vec2 qFootprint = footprint * vec2(p.brick);
   TP_PRECISE float onBrick = brickFraction(q, qFootprint, vec2(p.brick.z, p.brick.w));

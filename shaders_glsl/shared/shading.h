@@ -17,16 +17,20 @@
 
 TP_BEGIN
 
-// Radiance leaving the ground (or the pool's floor: its tiles) at world xz
-// (pixel footprint in metres) with normal n, lit by the sun (its irradiance scaled by sunScale:
-// the share of its disc in view, sunVisibility, times the caustics under
-// water) and by the sky's irradiance on a surface with normal n (the sky
-// above the horizon: the ground hides the rest).
-TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
-  vec3 albedo = groundAlbedo(ground, xz, footprint);
-  vec3 irradiance =
-      sunScale * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) + sh9Irradiance(frame.skySh, n);
+// Radiance leaving a Lambertian surface of `albedo` with normal n: the sky
+// above the horizon seen from the normal (pi L (1 + n.y) / 2 for a uniform
+// sky L), and the sun, `sunShare` of it (the share of its disc in view,
+// sunVisibility, times the caustics under the water).
+TP_INLINE vec3 lambertRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {
+  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
+                    sh9Irradiance(frame.skySh, n);
   return albedo / kPi * irradiance;
+}
+
+// Radiance leaving the ground (or the pool's floor: its tiles) at world xz
+// (pixel footprint in metres) with normal n, lit as lambertRadiance says.
+TP_INLINE vec3 groundRadiance(GroundParams ground, FrameUniforms frame, vec2 xz, vec2 footprint, vec3 n, float sunScale) {
+  return lambertRadiance(frame, groundAlbedo(ground, xz, footprint), n, sunScale);
 }
 
 // The finite-difference step of the floor's normals, in metres: well below the
@@ -142,15 +146,6 @@ TP_INLINE vec2 apparentDepthTexel(PoolParams pool, FrameUniforms frame, vec3 p, 
 // around it (the water when the camera is under the surface).
 TP_INLINE vec3 viewTransmittance(CameraMedium medium, vec3 camera, vec3 p) {
   return exp(-vec3(medium.extinction) * distance(camera, p));
-}
-
-// Lambertian objects (spheres and boxes): the sky above the horizon seen
-// from the normal (pi L (1 + n.y) / 2 for a uniform sky L); `sunShare` the
-// share of the sun's disc in view (sunVisibility).
-TP_INLINE vec3 objectRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {
-  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
-                    sh9Irradiance(frame.skySh, n);
-  return albedo / kPi * irradiance;
 }
 
 TP_END

@@ -19,6 +19,7 @@
 #include "shared/interop.h"
 #include "shared/objects.h"
 #include "shared/shadow_casters.h"
+#include "shared/specialization.h"
 
 #ifdef __cplusplus
 #define TP_CASTERS_PARAM const ShadowCasters &casters,
@@ -32,6 +33,9 @@
 
 TP_BEGIN
 
+// Which casters' code a shader holds is shared/specialization.h's
+// kSphereShadows and kBoxShadows: a scene without boxes, say, draws with
+// none of the boxes' code (docs/sun-shadows.md#cost).
 
 // A point this much farther from a sphere's centre than its radius is off it:
 // nearer, it is the sphere's own surface (its tessellation lies inside), which
@@ -111,6 +115,7 @@ TP_INLINE bool rayMeetsBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
 
 // The share of the disc about `toSun` no box hides from p (rays over the disc).
 TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY) {
+  if (!kBoxShadows) return 1.0f;
   uint boxes = uint(TP_CASTERS.sun.z);
   vec3 side = normalize(cross(toSun, abs(toSun.y) < 0.9f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f)));
   vec3 up = cross(side, toSun);
@@ -143,7 +148,7 @@ TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float ra
 TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY,
                                  float length, float behind, vec3 receiver) {
   float share = 1.0f;
-  for (uint i = 0u; i < uint(TP_CASTERS.sun.y); ++i) {
+  for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS.sun.y) : 0u); ++i) {
     vec4 s = TP_CASTERS.spheres[i];
     vec3 v = vec3(s) - p;
     if (behind > 0.0f && dot(v, v) < s.w * s.w && distance(receiver, vec3(s)) > s.w * kShadowOwnSurface) return 0.0f;
@@ -153,6 +158,15 @@ TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radi
     share = min(share, sphereSunVisibility(p, toSun, radius * (1.0f + behind / max(along, s.w)), s));
   }
   return min(share, boxesSunVisibility(TP_CASTERS_ARG p, toSun, radius, minY, maxY));
+}
+
+// The share of the sun's disc that lights p in the open air, outside the
+// pool (the ground): past the spheres and boxes alone, on one straight leg.
+// It is sunVisibility wherever p is out of the pool, without the code of
+// the walls' openings and the bent leg under the water.
+TP_INLINE float openAirSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
+  if (toSun.y <= 0.0f) return 0.0f;
+  return legSunVisibility(TP_CASTERS_ARG p, toSun, TP_CASTERS.sun.x, -1e30f, 1e30f, 1e30f, 0.0f, p);
 }
 
 // The share of the sun's disc (direction toSun, above the horizon) that
@@ -218,12 +232,12 @@ TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
     vec3 from = water ? p : q, dir = water ? inWater : toSun;
     float length = water ? distance(p, q) : 1e30f;
     float minY = water || !underWater ? -1e30f : level, maxY = water ? level : 1e30f;
-    for (uint i = 0u; i < uint(TP_CASTERS.sun.y); ++i) {
+    for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS.sun.y) : 0u); ++i) {
       vec4 s = TP_CASTERS.spheres[i];
       float hit = raySphere(from, dir, s);
       if (s.y + s.w >= minY && s.y - s.w <= maxY && hit > 0.0f && hit < length) open = 0.0f;
     }
-    for (uint b = 0u; b < uint(TP_CASTERS.sun.z); ++b) {
+    for (uint b = 0u; b < (kBoxShadows ? uint(TP_CASTERS.sun.z) : 0u); ++b) {
       vec4 center = TP_CASTERS.boxCenter[b], halfSize = TP_CASTERS.boxHalfSize[b];
       if (center.y + halfSize.y < minY || center.y - halfSize.y > maxY) continue;
       if (rayMeetsBox(from + kShadowRayStart * dir, dir, center, halfSize)) open = 0.0f;
@@ -237,12 +251,15 @@ TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
 // it in the variants for scenes where nothing casts a shadow (TP_NO_SHADOWS,
 // cmake/shaders.cmake), which hold none of the code above.
 // And whether the sun's central ray from p is open (sunRayOpen).
+// And the share for a point out of the pool (openAirSunVisibility).
 #ifdef TP_NO_SHADOWS
 float frameSunShare(vec3 p) { return 1.0; }
 float frameSunRayOpen(vec3 p) { return 1.0; }
+float frameOpenAirSunShare(vec3 p) { return 1.0; }
 #else
 float frameSunShare(vec3 p) { return sunVisibility(p, vec3(frame.sunDirection)); }
 float frameSunRayOpen(vec3 p) { return sunRayOpen(p, vec3(frame.sunDirection)); }
+float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, vec3(frame.sunDirection)); }
 #endif
 #endif
 

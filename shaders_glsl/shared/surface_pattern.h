@@ -10,6 +10,7 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/noise.h"
+#include "shared/specialization.h"
 
 TP_BEGIN
 
@@ -71,9 +72,10 @@ TP_INLINE vec3 tilesAlbedo(GroundParams g, vec2 p, vec2 footprint) {
   return albedo;
 }
 
-// The plane's own pattern at p: the checker or the tiles.
+// The plane's own pattern at p: the checker or the tiles (no tiles' code
+// without a tiled plane in the scene: shared/specialization.h).
 TP_INLINE vec3 patternAlbedo(GroundParams g, vec2 p, vec2 footprint) {
-  if (g.albedoA.w == 0.0f) {
+  if (g.albedoA.w == 0.0f || !kTiledSurfaces) {
     float odd = filteredChecker(p / g.plane.z, footprint / g.plane.z);
     return mix(vec3(g.albedoA), vec3(g.albedoB), odd);
   }
@@ -102,7 +104,8 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
   const float hole = g.plane.w, coping = g.jointAlbedo.w, terrace = g.copingAlbedo.w;
   // Lavapipe runs both sides of an if for every pixel: TP_ONLY_IF skips the
   // coping's and the lawn's terms where no pixel of a group is on them.
-  const float onCoping = hole > 0.0f && coping > 0.0f ? bandShare(outward, across, hole, hole + coping) : 0.0f;
+  // Both belong to the terrace, a tiled plane: no code for them without one.
+  const float onCoping = kTiledSurfaces && hole > 0.0f && coping > 0.0f ? bandShare(outward, across, hole, hole + coping) : 0.0f;
   TP_ONLY_IF(onCoping > 0.0f) {
     // Whole stones along each side, about kCopingStoneLength widths long,
     // with joints on the pool's corners: each corner is one square stone.
@@ -114,7 +117,7 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
     TP_PRECISE vec3 copingAlbedo = vec3(g.jointAlbedo) + (vec3(g.copingAlbedo) - vec3(g.jointAlbedo)) * onStone;
     albedo = mix(albedo, copingAlbedo, onCoping);
   }
-  const float onLawn = terrace > 0.0f ? bandShare(outward, across, terrace, 1e30f) : 0.0f;
+  const float onLawn = kTiledSurfaces && terrace > 0.0f ? bandShare(outward, across, terrace, 1e30f) : 0.0f;
   TP_ONLY_IF(onLawn > 0.0f) {
     TP_PRECISE float spread = clamp(1.0f - 2.0f * kLawnFrequency * max(footprint.x, footprint.y), 0.0f, 1.0f);
     TP_PRECISE float grass =

@@ -108,9 +108,13 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
   mergeBindings(p.bindings, fs.reflection, p.name);
   createLayout(ctx, p);
 
+  const vk::SpecializationInfo spec = desc.fragmentSpecialization.info();
   vk::PipelineShaderStageCreateInfo stages[] = {
       {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs.module, .pName = "main"},
-      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs.module, .pName = "main"},
+      {.stage = vk::ShaderStageFlagBits::eFragment,
+       .module = *fs.module,
+       .pName = "main",
+       .pSpecializationInfo = desc.fragmentSpecialization.empty() ? nullptr : &spec},
   };
   vk::PipelineVertexInputStateCreateInfo vertexInput{};  // vertices are pulled from buffers or gl_VertexIndex
   // Strips are drawn row by row, the rows separated by the restart index.

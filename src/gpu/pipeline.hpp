@@ -65,7 +65,8 @@ struct GraphicsPipelineDesc {
   bool depthWrite = false;
   vk::PrimitiveTopology topology = vk::PrimitiveTopology::eTriangleList;
   vk::CullModeFlags cullMode = vk::CullModeFlagBits::eNone;
-  bool additive = false;  // blend: destination + source (accumulating targets)
+  bool additive = false;                       // blend: destination + source (accumulating targets)
+  Specialization fragmentSpecialization = {};  // the fragment shader's specialization constants
 };
 
 Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);

@@ -100,13 +100,13 @@ class Tracer {
   Tracer(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame, const shader::FrameUniforms& uniforms,
          std::optional<SkyImage> skyImage, uint32_t maxSpecular)
       : uniforms_(uniforms),
+        hazeDistance_(scene.sky.hazeDistance),
         shadows_(scene.render.shadows),
         sunRadius_(glm::radians(scene.sky.sunAngularRadiusDegrees)),
         sky_(skyParams(scene.sky)),
         skyImage_(std::move(skyImage)),
         ground_(groundParams(scene)),
         maxSpecular_(maxSpecular),
-        hazeDistance_(scene.sky.hazeDistance),
         extinction_(scene.water.absorption + scene.water.scattering),
         scattering_(scene.water.scattering),
         anisotropy_(scene.water.scatteringAnisotropy),
@@ -190,7 +190,7 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return glossy(shader::objectRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun) * focus(p)), dir, n,
+      return glossy(shader::lambertRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun) * focus(p)), dir, n,
                     glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
@@ -215,7 +215,7 @@ class Tracer {
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return shader::objectRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun) * focus(p));
+        return shader::lambertRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun) * focus(p));
       }
       case Material::Water:
         return water(p, dir, hit, specular, path, first);

@@ -12,7 +12,8 @@ namespace {
 
 // sphere.vert tessellates each sphere (GlassSphereParams begins with its
 // SphereParams); the back faces with the front ones culled, and the reverse.
-gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull) {
+gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull,
+                                    FragmentNeeds needs = {}) {
   return {.vertexShader = "sphere.vert",
           .fragmentShader = fragmentShader,
           .pushSize = sizeof(shader::GlassSphereParams),
@@ -20,7 +21,8 @@ gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Forma
           .depthFormat = kDepthFormat,
           .depthTest = true,
           .depthWrite = true,
-          .cullMode = cull};
+          .cullMode = cull,
+          .fragmentSpecialization = fragmentSpecialization(needs)};
 }
 
 void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeline,
@@ -41,7 +43,7 @@ Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, Fra
           // Glass writes colour alone, so it has no colour-only variants.
           ctx, glassSide(fragmentVariant("glass.frag",
                                          {.gbuffer = true, .shadows = needs.shadows, .scattering = needs.scattering}),
-                         kHdrFormat, vk::CullModeFlagBits::eBack))) {
+                         kHdrFormat, vk::CullModeFlagBits::eBack, needs))) {
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
                                   "glass back faces");

@@ -7,12 +7,15 @@
 
 namespace tp::render {
 
-Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer)
+Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs)
     : params_(groundParams(scene)),
-      pipeline_(gpu::createGraphicsPipeline(
-          ctx,
-          opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), {gbuffer, castsShadows(scene)}))) {
-}
+      // The ground is never in the water: its shader has no scattering variants.
+      pipeline_(
+          gpu::createGraphicsPipeline(ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams),
+                                                          {.gbuffer = needs.gbuffer,
+                                                           .shadows = needs.shadows,
+                                                           .sphereShadows = needs.sphereShadows,
+                                                           .boxShadows = needs.boxShadows}))) {}
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
   graph.pass(passes::kGround, [this, targets, in](PassBuilder& pass) {

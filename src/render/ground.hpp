@@ -11,7 +11,7 @@ constexpr uint32_t kGroundVertices = 24;  // ground.vert: four quads around the 
 
 class Ground {
  public:
-  Ground(const gpu::Context& ctx, const scene::Scene& scene, bool gbuffer);
+  Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs);
   const shader::GroundParams& params() const { return params_; }
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
 

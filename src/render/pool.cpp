@@ -12,14 +12,11 @@
 
 namespace tp::render {
 
-Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer,
+Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
            const gpu::Buffer& objects)
-    : walls_(
-          gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0,
-                                                          {gbuffer, castsShadows(scene), hasWaterScattering(scene)}))),
-      floor_(
-          gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4),
-                                                          {gbuffer, castsShadows(scene), hasWaterScattering(scene)}))) {
+    : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
+      floor_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))) {
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
@@ -90,7 +87,8 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
 
 NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& objects,
                const shader::GroundParams& ground) {
-  const shader::PoolParams none{.ground = ground};
+  shader::PoolParams none{};
+  none.ground = ground;
   uniforms_ = gpu::createFilledBuffer(ctx, &none, sizeof(none), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "no pool uniforms");
   const std::vector<glm::vec4> vertex(1, glm::vec4(0.0f));

@@ -32,7 +32,8 @@ struct PoolDraw {
 class Pool {
  public:
   // `objects`: the objects the rays cast in shaders meet (shader::SceneObjects).
-  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer, const gpu::Buffer& objects);
+  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
+       const gpu::Buffer& objects);
   const PoolDraw& draw() const { return draw_; }
   // The caustics pass, when the scene has caustics.
   void declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const;

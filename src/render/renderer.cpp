@@ -53,16 +53,16 @@ struct Renderer::Resources {
         // The G-buffer: AO reads it (or nothing is skipped).
         targets(ctx, graph, frame, scene.ao.enabled || !options.skipping,
                 scene.ao.enabled || scene.render.antialiasing == "morphological" || scene.sky.hazeDistance > 0.0f),
+        needs(surfaceNeeds(scene, targets.surfaces().gbuffer(), options.skipping)),
         sky(ctx, graph, scene),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
-        ground(ctx, scene, targets.surfaces().gbuffer()),
+        ground(ctx, scene, needs),
         tonemap(ctx) {
     graph.setCaching(skipping);
     const FrameInputs in{uniformsRef,        sky.image(),       glossy.image(), medium.buffer(),
                          *samplers.equirect, *samplers.nearest, *samplers.clamp};
     const SurfaceTargets& surfaces = targets.surfaces();
-    const bool gbuffer = surfaces.gbuffer();
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
@@ -73,7 +73,7 @@ struct Renderer::Resources {
       noPool.emplace(ctx, graph, objectUniforms, ground.params());
     const PoolDraw* poolDraw = pool ? &pool->draw() : noPool ? &noPool->draw() : nullptr;
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
-      objects.emplace(ctx, FragmentNeeds{gbuffer, castsShadows(scene), hasWaterScattering(scene)}, *poolDraw);
+      objects.emplace(ctx, needs, *poolDraw);
       objects->declare(graph, surfaces, in, opaqueInView);
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
@@ -88,7 +88,7 @@ struct Renderer::Resources {
     // instead), before the water, which draws over what of it is under the
     // surface.
     if (scene::hasGlass(scene)) {
-      glass.emplace(ctx, graph, frame, FragmentNeeds{false, castsShadows(scene), hasWaterScattering(scene)}, *poolDraw);
+      glass.emplace(ctx, graph, frame, needs, *poolDraw);
       glass->declare(graph, surfaces, in, glassInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
@@ -118,7 +118,7 @@ struct Renderer::Resources {
   // the camera's medium, the pool and its caustics.
   void declareWater(const gpu::Context& ctx, const scene::Scene& scene, vk::Extent2D frame, const FrameInputs& in) {
     water.emplace(ctx, scene, skipping);
-    waterSurface.emplace(ctx, graph, scene, water->stepper(), frame);
+    waterSurface.emplace(ctx, graph, scene, needs, water->stepper(), frame);
     const WaterDraw& draw = waterSurface->draw();
     // The live drops and moves, the steps to this frame with the scene's
     // drops due on the way, and the stats that say whether the water is
@@ -130,7 +130,7 @@ struct Renderer::Resources {
                },
                {.cached = false, .runIf = [this] { return water->simulating(); }});
     medium.declare(graph, draw, in, [this] { return !skipping || cameraOverWater(live) || mediumMayNotBeAir; });
-    pool.emplace(ctx, graph, scene, targets.surfaces().gbuffer(), objectUniforms);
+    pool.emplace(ctx, graph, scene, needs, objectUniforms);
     pool->declareCaustics(graph, draw, in);
   }
 
@@ -210,6 +210,7 @@ struct Renderer::Resources {
   GraphBuffer uniformsRef;
   gpu::Buffer objectUniforms;  // the objects the rays cast in shaders meet (shader::SceneObjects)
   FrameTargets targets;
+  FragmentNeeds needs;  // what the surfaces' shaders need of the scene
   Sky sky;
   GlossyEnvironment glossy;
   CameraMedium medium;

@@ -3,6 +3,12 @@
 #include <array>
 #include <vector>
 
+#include "shading/frame_uniforms.hpp"
+#include "shading/glossy_model.hpp"
+#include "shading/pool_model.hpp"
+#include "shading/water_model.hpp"
+#include "shared/specialization.h"
+
 namespace tp::render {
 
 Samplers::Samplers(const gpu::Context& ctx)
@@ -88,6 +94,26 @@ std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds nee
   return name + ".frag";
 }
 
+FragmentNeeds surfaceNeeds(const scene::Scene& scene, bool gbuffer, bool skipping) {
+  return {.gbuffer = gbuffer,
+          .shadows = castsShadows(scene),
+          .scattering = hasWaterScattering(scene),
+          .sphereShadows = !skipping || spheresCastShadows(scene),
+          .boxShadows = !skipping || boxesCastShadows(scene),
+          .glossy = !skipping || hasGlossySurface(scene),
+          .brickWalls = !skipping || hasBrickWalls(scene),
+          .tiles = !skipping || hasTiledSurface(scene)};
+}
+
+gpu::Specialization fragmentSpecialization(FragmentNeeds needs) {
+  return gpu::Specialization()
+      .set(TP_SPEC_SPHERE_SHADOWS, uint32_t(needs.sphereShadows))
+      .set(TP_SPEC_BOX_SHADOWS, uint32_t(needs.boxShadows))
+      .set(TP_SPEC_GLOSSY, uint32_t(needs.glossy))
+      .set(TP_SPEC_BRICK_WALLS, uint32_t(needs.brickWalls))
+      .set(TP_SPEC_TILES, uint32_t(needs.tiles));
+}
+
 gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const std::string& fragmentShader,
                                          uint32_t pushSize, FragmentNeeds needs) {
   return {
@@ -97,7 +123,8 @@ gpu::GraphicsPipelineDesc opaquePipeline(const std::string& vertexShader, const 
       .colorFormats = needs.gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
       .depthFormat = kDepthFormat,
       .depthTest = true,
-      .depthWrite = true};
+      .depthWrite = true,
+      .fragmentSpecialization = fragmentSpecialization(needs)};
 }
 
 }  // namespace tp::render

@@ -9,6 +9,7 @@
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
 #include "graph/frame_graph.hpp"
+#include "scene/scene.hpp"
 
 namespace tp::render {
 
@@ -71,13 +72,29 @@ void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const
 // (cmake/shaders.cmake): the G-buffer outputs, the sun shadows' code
 // (shading/frame_uniforms.hpp's castsShadows), the light scattered in the
 // water (shading/water_model.hpp's hasWaterScattering), glass the water's
-// rays meet (scene::hasGlass).
+// rays meet (scene::hasGlass); and, as specialization constants
+// (fragmentSpecialization), which casters' code the shadows hold, whether
+// the glossy lookups are there, and which patterns' code.
 struct FragmentNeeds {
   bool gbuffer = true;
   bool shadows = true;
   bool scattering = false;
   bool glass = false;
+  bool sphereShadows = true;
+  bool boxShadows = true;
+  bool glossy = true;
+  bool brickWalls = true;
+  bool tiles = true;
 };
+
+// What the scene's opaque surfaces need (glass is the water's alone). With
+// `skipping` off, all of the code (every kind of caster, the glossy lookups,
+// every pattern): the frame drawn by the general shaders, which tests
+// compare the specialized ones with.
+FragmentNeeds surfaceNeeds(const scene::Scene& scene, bool gbuffer, bool skipping);
+
+// The fragment shader's specialization constants (shared/specialization.h).
+gpu::Specialization fragmentSpecialization(FragmentNeeds needs);
 
 // The variant of a fragment shader NAME.frag: NAME, then .color_only
 // without the G-buffer, .no_shadows without shadows, .scattering with

@@ -10,7 +10,7 @@ namespace tp::render {
 namespace {
 
 // One side of the water mesh, the other side culled.
-gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullModeFlags cull) {
+gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullModeFlags cull, FragmentNeeds needs) {
   return {.vertexShader = "water_surface.vert",
           .fragmentShader = fragmentShader,
           .pushSize = sizeof(shader::WaterSurfaceParams),
@@ -19,26 +19,32 @@ gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullM
           .depthTest = true,
           .depthWrite = true,
           .topology = vk::PrimitiveTopology::eTriangleStrip,
-          .cullMode = cull};
+          .cullMode = cull,
+          .fragmentSpecialization = fragmentSpecialization(needs)};
 }
 
 bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
 
-// The water's shaders have no G-buffer outputs and no colour-only variant.
-FragmentNeeds waterNeeds(const scene::Scene& scene) {
-  return {.shadows = castsShadows(scene), .scattering = hasWaterScattering(scene), .glass = scene::hasGlass(scene)};
+// The water's shaders have no G-buffer outputs and no colour-only variant;
+// their rays may meet glass.
+FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
+  FragmentNeeds needs = surfaces;
+  needs.gbuffer = true;
+  needs.glass = scene::hasGlass(scene);
+  return needs;
 }
 
 }  // namespace
 
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
-                           sim::GpuStepper& stepper, vk::Extent2D frame)
+                           FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame)
     : above_(gpu::createGraphicsPipeline(
           ctx, waterSide(fragmentVariant(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
-                                         waterNeeds(scene)),
-                         vk::CullModeFlagBits::eBack))),
-      below_(gpu::createGraphicsPipeline(ctx, waterSide(fragmentVariant("water_surface_below.frag", waterNeeds(scene)),
-                                                        vk::CullModeFlagBits::eFront))) {
+                                         waterNeeds(scene, surfaces)),
+                         vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces)))),
+      below_(gpu::createGraphicsPipeline(
+          ctx, waterSide(fragmentVariant("water_surface_below.frag", waterNeeds(scene, surfaces)),
+                         vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                      "water grid indices");

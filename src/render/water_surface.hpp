@@ -16,8 +16,10 @@ namespace tp::render {
 
 class WaterSurface {
  public:
-  WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, sim::GpuStepper& stepper,
-               vk::Extent2D frame);
+  // `surfaces`: what the opaque surfaces need (surfaceNeeds); the water's
+  // shaders need the same and may meet glass.
+  WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds surfaces,
+               sim::GpuStepper& stepper, vk::Extent2D frame);
   const WaterDraw& draw() const { return draw_; }
   // The copy of the pool under the water, for the apparent-depth mode (else nothing).
   void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;

@@ -8,10 +8,15 @@
 
 namespace tp::render {
 
+bool spheresCastShadows(const scene::Scene& scene) {
+  return scene.render.shadows && std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                                             [](const scene::Sphere& s) { return !scene::isGlass(s); });
+}
+
+bool boxesCastShadows(const scene::Scene& scene) { return scene.render.shadows && !scene.boxes.empty(); }
+
 bool castsShadows(const scene::Scene& scene) {
-  const bool opaqueSphere = std::any_of(scene.spheres.begin(), scene.spheres.end(),
-                                        [](const scene::Sphere& s) { return !scene::isGlass(s); });
-  return scene.render.shadows && (opaqueSphere || !scene.boxes.empty() || hasPool(scene));
+  return spheresCastShadows(scene) || boxesCastShadows(scene) || (scene.render.shadows && hasPool(scene));
 }
 
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {

@@ -9,6 +9,11 @@ namespace tp::render {
 // and an opaque sphere, a box or a pool): otherwise the surfaces' shaders
 // are the variants without the shadows' code.
 bool castsShadows(const scene::Scene& scene);
+// Whether the scene's opaque spheres, and its boxes, cast the sun's shadow:
+// otherwise the shaders are specialized without their code
+// (shared/sun_shadow.h's kSphereShadows and kBoxShadows).
+bool spheresCastShadows(const scene::Scene& scene);
+bool boxesCastShadows(const scene::Scene& scene);
 
 // What casts the sun's shadows at `time`: the scene's opaque spheres (the
 // first TP_MAX_SPHERES) where their paths put them, its boxes, its pool's

@@ -28,6 +28,14 @@ float wallPatternCode(const std::string& pattern) {
 
 }  // namespace
 
+bool hasBrickWalls(const scene::Scene& scene) { return hasPool(scene) && scene.pool.wallPattern == "brick"; }
+
+bool hasTiledSurface(const scene::Scene& scene) {
+  const scene::Pool& p = scene.pool;
+  return scene.ground.pattern == "terrace" ||
+         (hasPool(scene) && (p.floorPattern == "tiles" || p.wallPattern == "tiles"));
+}
+
 PoolModel poolModel(const scene::Scene& scene) {
   const scene::Pool& p = scene.pool;
   const scene::Terrain& t = scene.terrain;

@@ -15,6 +15,13 @@ inline constexpr uint32_t kCausticsSize = 512;
 // The pool exists when the scene has water: it holds it.
 inline bool hasPool(const scene::Scene& scene) { return scene.water.enabled; }
 
+// Whether the pool's walls are brick, and whether a plane of the scene (the
+// ground, the pool's floor or walls) is tiled or paved: otherwise the
+// shaders are specialized without that pattern's code
+// (shared/specialization.h).
+bool hasBrickWalls(const scene::Scene& scene);
+bool hasTiledSurface(const scene::Scene& scene);
+
 // The pool as the shaders and the reference take it: its parameters, and its
 // floor mesh's vertices row by row (kPoolFloorGrid per side, from the pool's
 // -x, -z corner), xyz the terrain's normal there (poolFloorNormal), w its
