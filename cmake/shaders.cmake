@@ -47,6 +47,9 @@ foreach(water water_surface water_surface_apparent water_surface_below)
     ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${water}.no_shadows.scattering.glass.frag)
 endforeach()
 
+# The AO's apply pass that upsamples half-resolution AO as it applies it.
+list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)
+
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS
     ${TIDEPOOL_SHADER_DIR}/*.comp ${TIDEPOOL_SHADER_DIR}/*.vert ${TIDEPOOL_SHADER_DIR}/*.frag)

@@ -13,6 +13,7 @@
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
+#include "render/pass_kinds.hpp"
 #include "render/renderer.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/sky_model.hpp"
@@ -191,9 +192,11 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return n;
   };
   // Frame 0 again and again: no steps to take, and the cached passes (sky,
-  // caustics) ran on the first; the camera is away from the water (no camera medium).
-  const std::vector<std::string> opaque{"background", "ground",    "pool",     "objects", "ssao",
-                                        "ao blur x",  "ao blur y", "ao apply", "water",   "haze"};
+  // caustics) ran on the first; the camera is away from the water (no camera
+  // medium). The sky's background after the opaque surfaces, where they left
+  // the far plane.
+  const std::vector<std::string> opaque{"ground",    "pool",      "objects",  "background", "ssao",
+                                        "ao blur x", "ao blur y", "ao apply", "water",      "haze"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
     all.insert(all.end(), tail.begin(), tail.end());
@@ -215,20 +218,23 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
 
   // A scene without water pays for none: no simulation, no water pass; one
   // without AO, for no SSAO passes; AO at half resolution without a blur:
-  // SSAO, upsample, apply.
+  // SSAO, then the apply, which upsamples (the upsampled image only for a
+  // request of the AO).
   scene::Scene dry = scene::defaultScene();
   dry.water.enabled = false;
   dry.ao.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "background", "ground", "objects", "haze", "readback hdr"}));
+            (std::vector<std::string>{"sky", "ground", "objects", "background", "haze", "readback hdr"}));
   dry.ao = scene::Ao{};
   dry.ao.resolution = "half";
   dry.ao.blur = "off";
   render::Renderer halfRenderer(ctx(), dry, 64, 48);
-  EXPECT_EQ(names(halfRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "background", "ground", "objects", "ssao", "ao upsample", "ao apply",
-                                      "haze", "readback hdr"}));
+  EXPECT_EQ(
+      names(halfRenderer.render({.hdr = true})),
+      (std::vector<std::string>{"sky", "ground", "objects", "background", "ssao", "ao apply", "haze", "readback hdr"}));
+  const auto withAo = halfRenderer.render({.hdr = true, .ao = true});
+  EXPECT_NE(render::findPass(withAo.passes, render::passes::kAoUpsample), nullptr);
 }
 
 TEST_F(RenderTest, TonemapMatchesTheCpuCurve) {

@@ -19,7 +19,9 @@ AmbientOcclusion::AmbientOcclusion(const gpu::Context& ctx, FrameGraph& graph, c
       ssao_(gpu::createComputePipeline(ctx, "ssao.comp", sizeof(shader::SsaoParams))),
       blur_(gpu::createComputePipeline(ctx, "ao_blur.comp", sizeof(shader::AoBlurParams))),
       upsample_(gpu::createComputePipeline(ctx, "ao_upsample.comp", sizeof(shader::AoUpsampleParams))),
-      apply_(gpu::createComputePipeline(ctx, "ao_apply.comp", sizeof(shader::AoApplyParams))),
+      // At half resolution the apply pass upsamples as it applies.
+      apply_(low_ != frame ? gpu::createComputePipeline(ctx, "ao_apply.upsample.comp", sizeof(shader::AoUpsampleParams))
+                           : gpu::createComputePipeline(ctx, "ao_apply.comp", sizeof(shader::AoApplyParams))),
       aoReadback_(ctx, graph, "AO readback", pixels(frame) * 4),
       rawReadback_(ctx, graph, "raw AO readback", pixels(low_) * 4),
       depthReadback_(ctx, graph, "G-buffer depth readback", pixels(frame) * 4),
@@ -65,22 +67,34 @@ void AmbientOcclusion::declare(FrameGraph& graph, const SurfaceTargets& surfaces
           [this, push](const vk::raii::CommandBuffer& cmd) { gpu::bindPipeline(cmd, blur_, push); }, size);
     }
   }
+  // The upsampled AO as an image, for its readback alone: the graph leaves
+  // the pass out of frames that do not ask for it.
+  const shader::AoUpsampleParams upsampleParams = aoUpsampleParams(ao_, frame_.width, frame_.height);
   if (full_) {
-    const shader::AoUpsampleParams push = aoUpsampleParams(ao_, frame_.width, frame_.height);
     declareFilter(
         graph, passes::kAoUpsample, upsample_, surfaces, in, lowResult(), full_,
-        [this, push](const vk::raii::CommandBuffer& cmd) { gpu::bindPipeline(cmd, upsample_, push); }, frame_);
+        [this, upsampleParams](const vk::raii::CommandBuffer& cmd) {
+          gpu::bindPipeline(cmd, upsample_, upsampleParams);
+        },
+        frame_);
   }
   const shader::AoApplyParams applyParams{glm::uvec4(frame_.width, frame_.height, 0u, 0u)};
-  graph.pass(passes::kAoApply, [this, surfaces, applyParams](PassBuilder& pass) {
+  graph.pass(passes::kAoApply, [this, surfaces, in, applyParams, upsampleParams](PassBuilder& pass) {
     Bindings& set = pass.bindings()
                         .storageImage(0, surfaces.color, Use::ComputeReadWrite)
                         .storageImage(1, surfaces.ambient, Use::ComputeRead)
-                        .storageImage(2, result(), Use::ComputeRead);
-    return [this, &set, applyParams](PassContext& pc) {
-      gpu::bindPipeline(pc.cmd, apply_, applyParams);
+                        .storageImage(2, lowResult(), Use::ComputeRead);
+    if (full_) {
+      set.uniformBuffer(3, in.uniforms, Use::HostData).sampledImage(4, surfaces.depth, in.nearest, Use::ComputeSample);
+    }
+    return [this, &set, applyParams, upsampleParams](PassContext& pc) {
+      if (full_) {
+        gpu::bindPipeline(pc.cmd, apply_, upsampleParams);
+      } else {
+        gpu::bindPipeline(pc.cmd, apply_, applyParams);
+      }
       set.bind(pc.cmd, apply_, pc.descriptors);
-      gpu::dispatchCovering(pc.cmd, apply_, applyParams.size.x, applyParams.size.y);
+      gpu::dispatchCovering(pc.cmd, apply_, frame_.width, frame_.height);
     };
   });
   declareReadback(graph, passes::kReadbackAo, result(), aoReadback_);

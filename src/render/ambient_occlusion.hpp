@@ -1,8 +1,9 @@
 #pragma once
 // Screen-space ambient occlusion: SSAO from the opaque surfaces' depth and
-// G-buffer, the separable blur, the depth-aware upsample (half resolution),
-// and the AO put into the frame (shaders_glsl/ssao.comp, ao_blur.comp,
-// ao_upsample.comp, ao_apply.comp); with the readbacks a frame asking for its
+// G-buffer, the separable blur, and the AO put into the frame, upsampled
+// there depth-aware at half resolution (shaders_glsl/ssao.comp, ao_blur.comp,
+// ao_apply.comp, lib/ao_upsample.glsl); the upsampled AO as an image
+// (ao_upsample.comp) only for its readback; with the readbacks a frame asking for its
 // AO uses (declared with them, so the depth read back is the opaque
 // surfaces', before the water draws over it).
 #include <optional>

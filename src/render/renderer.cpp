@@ -66,7 +66,6 @@ struct Renderer::Resources {
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
-    sky.declareBackground(graph, surfaces.color, in);
     ground.declare(graph, surfaces, in);
     if (pool) pool->declare(graph, surfaces, in);
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
@@ -76,6 +75,8 @@ struct Renderer::Resources {
       objects.emplace(ctx, needs, *poolDraw);
       objects->declare(graph, surfaces, in, opaqueInView);
     }
+    // The sky where no opaque surface is (their depth test leaves the rest out).
+    sky.declareBackground(graph, surfaces, in);
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too.
     if (scene.ao.enabled) {

@@ -19,8 +19,10 @@ class Sky {
   const SkyLight& light() const { return light_; }
   // The procedural sky's pass; nothing for a sky image.
   void declareSky(FrameGraph& graph) const;
-  // The sky behind everything, seen through each pixel's view ray.
-  void declareBackground(FrameGraph& graph, const GraphImage& color, const FrameInputs& in) const;
+  // The sky behind everything, seen through each pixel's view ray, drawn
+  // after the opaque surfaces where their depth left the far plane: the
+  // depth test before the shader leaves out the pixels they cover.
+  void declareBackground(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
 
  private:
   gpu::Image image_;

@@ -45,8 +45,8 @@ vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout 
 }
 
 void attachSurfaces(PassBuilder& pass, const SurfaceTargets& t, bool first) {
-  pass.attach(t.color, Use::ColorReadWrite);
   pass.attach(t.depth, first ? Use::DepthWrite : Use::DepthReadWrite);
+  pass.attach(t.color, first ? Use::ColorWrite : Use::ColorReadWrite);
   if (!t.gbuffer()) return;
   for (const GraphImage& g : {t.normal, t.ambient}) pass.attach(g, first ? Use::ColorWrite : Use::ColorReadWrite);
 }
@@ -54,13 +54,12 @@ void attachSurfaces(PassBuilder& pass, const SurfaceTargets& t, bool first) {
 void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, bool first,
                   const std::function<void()>& draw) {
   const auto load = first ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eLoad;
-  auto gbufferTarget = [&](const GraphImage& target) {
+  auto colorTarget = [&](const GraphImage& target) {
     return attachment(*target.image, vk::ImageLayout::eColorAttachmentOptimal, load,
                       vk::ClearValue{.color = {std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f}}});
   };
-  std::vector<vk::RenderingAttachmentInfo> colorTargets{
-      attachment(*t.color.image, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad)};
-  if (t.gbuffer()) colorTargets.insert(colorTargets.end(), {gbufferTarget(t.normal), gbufferTarget(t.ambient)});
+  std::vector<vk::RenderingAttachmentInfo> colorTargets{colorTarget(t.color)};
+  if (t.gbuffer()) colorTargets.insert(colorTargets.end(), {colorTarget(t.normal), colorTarget(t.ambient)});
   auto depthTarget = attachment(*t.depth.image, vk::ImageLayout::eDepthAttachmentOptimal, load,
                                 vk::ClearValue{.depthStencil = {1.0f, 0}});
   renderTo(cmd, colorTargets, &depthTarget, t.color.image->extent, draw);

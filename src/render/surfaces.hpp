@@ -56,8 +56,9 @@ vk::RenderingAttachmentInfo attachment(const gpu::Image& image, vk::ImageLayout 
 void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingAttachmentInfo> colors,
               const vk::RenderingAttachmentInfo* depth, vk::Extent2D extent, const std::function<void()>& draw);
 
-// A surface pass's attachments, declared: colour drawn over, depth and the
-// G-buffer cleared by the first surface pass (`first`) and drawn over by the rest.
+// A surface pass's attachments, declared: colour, depth and the G-buffer
+// cleared by the first surface pass (`first`) and drawn over by the rest.
+// The sky's background comes after the surfaces, where none was drawn.
 void attachSurfaces(PassBuilder& pass, const SurfaceTargets& targets, bool first);
 // Renders over the surface targets (as attachSurfaces declared them; zero
 // ambient where the first pass clears: AO takes nothing from pixels no
