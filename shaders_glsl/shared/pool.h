@@ -80,7 +80,7 @@ TP_INLINE vec3 poolWallAlbedo(PoolParams p, vec2 wall, vec2 footprint) {
   TP_PRECISE float dirtNoise = fractalNoise01(TP_NOISE_GRADIENT, wall * kBrickDirtFrequency, kBrickDirtSeed,
                                               kBrickDirtOctaves, kBrickDirtPersistence);
   TP_PRECISE float clean = 1.0f - p.brickAlbedo.w * dirtNoise;
-  TP_PRECISE vec3 albedo = (mortar + (brick - mortar) * onBrick) * clean;
+  TP_PRECISE vec3 albedo = jointedAlbedo(mortar, brick, onBrick) * clean;
   return albedo;
 }
 

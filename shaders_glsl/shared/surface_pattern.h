@@ -52,6 +52,13 @@ TP_INLINE float bandShare(float x, float w, float a, float b) {
   return clamp(inside / w, 0.0f, 1.0f);
 }
 
+// A surface with joints, `share` of it on the stones (or tiles) and the
+// rest on the joints: the albedo the pixel averages.
+TP_INLINE vec3 jointedAlbedo(vec3 joint, vec3 stone, float share) {
+  TP_PRECISE vec3 albedo = joint + (stone - joint) * share;
+  return albedo;
+}
+
 // Tiles at p (metres in the plane) over a footprint (metres): the share on
 // tile rather than grout is the product of the two joints' pulses (exact in
 // a row; across rows the centre's row places the head joints, as for the
@@ -68,8 +75,7 @@ TP_INLINE vec3 tilesAlbedo(GroundParams g, vec2 p, vec2 footprint) {
   TP_PRECISE float spread = clamp(1.0f - max(qFootprint.x, qFootprint.y), 0.0f, 1.0f);
   TP_PRECISE float tone = 0.5f + spread * (latticeValue(int(floor(along)), int(row), kTileToneSeed) - 0.5f);
   TP_PRECISE vec3 tile = vec3(g.albedoA) + (vec3(g.albedoB) - vec3(g.albedoA)) * tone;
-  TP_PRECISE vec3 albedo = vec3(g.jointAlbedo) + (tile - vec3(g.jointAlbedo)) * onTile;
-  return albedo;
+  return jointedAlbedo(vec3(g.jointAlbedo), tile, onTile);
 }
 
 // The plane's own pattern at p: the checker or the tiles (no tiles' code
@@ -88,8 +94,7 @@ TP_INLINE vec3 patternMeanAlbedo(GroundParams g) {
   TP_PRECISE vec3 tones = 0.5f * (vec3(g.albedoA) + vec3(g.albedoB));
   if (g.albedoA.w == 0.0f) return tones;
   TP_PRECISE float onTile = (1.0f - 2.0f * g.tiles.z) * (1.0f - 2.0f * g.tiles.w);
-  TP_PRECISE vec3 albedo = vec3(g.jointAlbedo) + (tones - vec3(g.jointAlbedo)) * onTile;
-  return albedo;
+  return jointedAlbedo(vec3(g.jointAlbedo), tones, onTile);
 }
 
 // The ground at world xz: its pattern; then, out from the pool's edge, the
@@ -114,7 +119,7 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
     TP_PRECISE float along = (onXSide ? xz.y : xz.x) + hole;
     TP_PRECISE float onStone =
         brickPulse(along / stone, (onXSide ? footprint.y : footprint.x) / stone, g.lawnAlbedo.w / stone);
-    TP_PRECISE vec3 copingAlbedo = vec3(g.jointAlbedo) + (vec3(g.copingAlbedo) - vec3(g.jointAlbedo)) * onStone;
+    vec3 copingAlbedo = jointedAlbedo(vec3(g.jointAlbedo), vec3(g.copingAlbedo), onStone);
     albedo = mix(albedo, copingAlbedo, onCoping);
   }
   const float onLawn = kTiledSurfaces && terrace > 0.0f ? bandShare(outward, across, terrace, 1e30f) : 0.0f;

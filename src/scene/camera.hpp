@@ -5,13 +5,18 @@
 
 namespace tp::scene {
 
+// The default scene's view: a camera's, and a path key's where it leaves one out.
+inline constexpr glm::vec3 kDefaultCameraPosition{3.4f, 1.45f, 4.3f};
+inline constexpr glm::vec3 kDefaultCameraTarget{0.0f, -0.25f, 0.0f};
+inline constexpr float kDefaultFovYDegrees = 55.0f;
+
 // Where the camera stands, what it looks at and how wide it sees at a time
 // (seconds from the scene's start).
 struct CameraKeyframe {
   float time = 0.0f;
-  glm::vec3 position{3.4f, 1.45f, 4.3f};
-  glm::vec3 target{0.0f, -0.25f, 0.0f};
-  float fovYDegrees = 55.0f;
+  glm::vec3 position = kDefaultCameraPosition;
+  glm::vec3 target = kDefaultCameraTarget;
+  float fovYDegrees = kDefaultFovYDegrees;
   bool operator==(const CameraKeyframe&) const = default;
 };
 
@@ -20,10 +25,10 @@ struct CameraKeyframe {
 inline const std::vector<std::string> kCameraInterpolation{"linear", "catmull_rom"};
 
 struct Camera {
-  glm::vec3 position{3.4f, 1.45f, 4.3f};
-  glm::vec3 target{0.0f, -0.25f, 0.0f};
+  glm::vec3 position = kDefaultCameraPosition;
+  glm::vec3 target = kDefaultCameraTarget;
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fovYDegrees = 55.0f;
+  float fovYDegrees = kDefaultFovYDegrees;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
   // The camera moves along `path` (held before its first key and after its
