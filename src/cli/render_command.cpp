@@ -104,8 +104,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                     "Submit each pass on its own and print it with its wall and GPU milliseconds, dispatches, "
                     "draws and workgroups");
   cmd->add_flag("--no-skip", o.noSkip,
-                "Record every pass the scene has, even those this frame does not need (the frame to compare "
-                "against; docs/frame-skipping.md)");
+                "Record every pass the scene has, even those this frame does not need, and draw with the "
+                "general shaders, not those specialized by the scene (the frame to compare against; "
+                "docs/frame-skipping.md)");
   cmd->add_option("--aov", o.aovs,
                   "Extra float32 EXR channels in layers, comma-separated: Z (view depth), N (N.X N.Y N.Z world "
                   "normal), P (P.X P.Y P.Z world position); where nothing is hit Z is the camera's far plane and P "
