@@ -12,10 +12,11 @@ namespace {
 
 // sphere.vert tessellates each sphere (GlassSphereParams begins with its
 // SphereParams); the back faces with the front ones culled, and the reverse.
+// The fragment shader's variant and specialization as `needs` says.
 gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Format colorFormat, vk::CullModeFlags cull,
                                     FragmentNeeds needs = {}) {
   return {.vertexShader = "sphere.vert",
-          .fragmentShader = fragmentShader,
+          .fragmentShader = fragmentVariant(fragmentShader, needs),
           .pushSize = sizeof(shader::GlassSphereParams),
           .colorFormats = {colorFormat},
           .depthFormat = kDepthFormat,
@@ -23,6 +24,15 @@ gpu::GraphicsPipelineDesc glassSide(const std::string& fragmentShader, vk::Forma
           .depthWrite = true,
           .cullMode = cull,
           .fragmentSpecialization = fragmentSpecialization(needs)};
+}
+
+// Glass writes colour alone, so it has no colour-only variants, and its
+// rays meet no other glass.
+FragmentNeeds glassNeeds(FragmentNeeds surfaces) {
+  FragmentNeeds needs = surfaces;
+  needs.gbuffer = true;
+  needs.glass = false;
+  return needs;
 }
 
 void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeline,
@@ -40,10 +50,7 @@ Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, Fra
       back_(gpu::createGraphicsPipeline(ctx,
                                         glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
       front_(gpu::createGraphicsPipeline(
-          // Glass writes colour alone, so it has no colour-only variants.
-          ctx, glassSide(fragmentVariant("glass.frag",
-                                         {.gbuffer = true, .shadows = needs.shadows, .scattering = needs.scattering}),
-                         kHdrFormat, vk::CullModeFlagBits::eBack, needs))) {
+          ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack, glassNeeds(needs)))) {
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
                                   "glass back faces");

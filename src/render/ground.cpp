@@ -7,15 +7,21 @@
 
 namespace tp::render {
 
+namespace {
+
+// The ground is never in the water: its shader has no scattering variants.
+FragmentNeeds groundNeeds(FragmentNeeds surfaces) {
+  FragmentNeeds needs = surfaces;
+  needs.scattering = false;
+  return needs;
+}
+
+}  // namespace
+
 Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs)
     : params_(groundParams(scene)),
-      // The ground is never in the water: its shader has no scattering variants.
-      pipeline_(
-          gpu::createGraphicsPipeline(ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams),
-                                                          {.gbuffer = needs.gbuffer,
-                                                           .shadows = needs.shadows,
-                                                           .sphereShadows = needs.sphereShadows,
-                                                           .boxShadows = needs.boxShadows}))) {}
+      pipeline_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), groundNeeds(needs)))) {}
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
   graph.pass(passes::kGround, [this, targets, in](PassBuilder& pass) {

@@ -9,10 +9,11 @@
 namespace tp::render {
 namespace {
 
-// One side of the water mesh, the other side culled.
+// One side of the water mesh, the other side culled; the fragment shader's
+// variant and specialization as `needs` says.
 gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullModeFlags cull, FragmentNeeds needs) {
   return {.vertexShader = "water_surface.vert",
-          .fragmentShader = fragmentShader,
+          .fragmentShader = fragmentVariant(fragmentShader, needs),
           .pushSize = sizeof(shader::WaterSurfaceParams),
           .colorFormats = {kHdrFormat},
           .depthFormat = kDepthFormat,
@@ -39,12 +40,10 @@ FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
                            FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame)
     : above_(gpu::createGraphicsPipeline(
-          ctx, waterSide(fragmentVariant(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
-                                         waterNeeds(scene, surfaces)),
+          ctx, waterSide(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
                          vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces)))),
       below_(gpu::createGraphicsPipeline(
-          ctx, waterSide(fragmentVariant("water_surface_below.frag", waterNeeds(scene, surfaces)),
-                         vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
+          ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                      "water grid indices");
