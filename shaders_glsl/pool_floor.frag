@@ -21,8 +21,9 @@ void main() {
   const float caustic =
       texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
-  color = vec4(poolFloorRadiance(pool, frame, worldPosition, n, footprint, caustic) * toCamera +
+  const vec3 albedo = groundAlbedo(pool.tiles, worldPosition.xz, footprint);
+  color = vec4(lambertRadiance(frame, albedo, n, caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  writeGbuffer(frame, n, poolFloorRadiance(pool, withoutSun(frame), worldPosition, n, footprint, caustic) * toCamera);
+  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, caustic) * toCamera);
 }

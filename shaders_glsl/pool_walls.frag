@@ -25,11 +25,12 @@ void main() {
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   // Under the water the sun comes through the waves (the caustics texture).
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
-  const vec3 diffuse = poolWallRadiance(pool, frame, worldPosition, n, footprint, frameSunShare(worldPosition) * caustic);
+  const vec3 albedo = poolWallAlbedo(pool, poolWallCoordinates(pool, worldPosition, n), footprint);
+  const vec3 diffuse = lambertRadiance(frame, albedo, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
   // AO scales the Lambertian part's sky light only.
-  writeGbuffer(frame, n, glossyMix(poolWallRadiance(pool, withoutSun(frame), worldPosition, n, footprint, 1.0), vec3(0.0),
+  writeGbuffer(frame, n, glossyMix(lambertRadiance(withoutSun(frame), albedo, n, 1.0), vec3(0.0),
                                    pool.wallGloss.x) * toCamera);
 }

@@ -119,6 +119,8 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {&render::passes::kCameraMedium},
        {}},
+      // The apparent-depth mode reads the frame drawn under the water.
+      {"apparent refraction", [](scene::Scene& s, const std::string&) { s.render.refraction = "apparent"; }, {}, {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};

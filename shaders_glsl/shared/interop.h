@@ -14,7 +14,6 @@
 #define TP_INLINE inline
 #define TP_PRECISE
 #define TP_DONT_UNROLL
-#define TP_ONLY_IF(condition) if (condition)
 #else
 #extension GL_EXT_control_flow_attributes : enable
 #define TP_BEGIN
@@ -27,10 +26,6 @@
 // compiled once per iteration at every call site (lavapipe compiles each
 // pipeline when first drawn).
 #define TP_DONT_UNROLL [[dont_unroll]]
-// An `if` whose body lavapipe skips when no pixel of the group takes it:
-// llvmpipe runs both sides of an if for every pixel (masked), but leaves a
-// loop once no pixel is in it. For costly code most pixels do not need.
-#define TP_ONLY_IF(condition) TP_DONT_UNROLL for (int tpOnce = 0; tpOnce < ((condition) ? 1 : 0); ++tpOnce)
 #endif
 
 #endif

@@ -67,7 +67,7 @@ TP_INLINE float sphereSunVisibility(vec3 p, vec3 toSun, float radius, vec4 spher
   // less than r + radius d (sin(a + b) <= sin a + b), off its own surface.
   bool near = along > 0.0f && d > sphere.w * kShadowOwnSurface &&
               dot(v, v) - along * along < (sphere.w + radius * d) * (sphere.w + radius * d);
-  TP_ONLY_IF(near) {
+  if (near) {
     float apart = atan(length(cross(v, toSun)), along);
     float angular = asin(sphere.w / d);
     visible = 1.0f - discOverlap(radius, angular, apart) / (kPi * radius * radius);

@@ -107,11 +107,10 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
   const float outward = max(abs(xz.x), abs(xz.y));
   const float across = onXSide ? footprint.x : footprint.y;
   const float hole = g.plane.w, coping = g.jointAlbedo.w, terrace = g.copingAlbedo.w;
-  // Lavapipe runs both sides of an if for every pixel: TP_ONLY_IF skips the
-  // coping's and the lawn's terms where no pixel of a group is on them.
-  // Both belong to the terrace, a tiled plane: no code for them without one.
+  // Both belong to the terrace, a tiled plane: no code for them without one
+  // (lavapipe runs an if's body for every pixel, masked, wherever it is compiled in).
   const float onCoping = kTiledSurfaces && hole > 0.0f && coping > 0.0f ? bandShare(outward, across, hole, hole + coping) : 0.0f;
-  TP_ONLY_IF(onCoping > 0.0f) {
+  if (onCoping > 0.0f) {
     // Whole stones along each side, about kCopingStoneLength widths long,
     // with joints on the pool's corners: each corner is one square stone.
     TP_PRECISE float stones = max(1.0f, floor(2.0f * hole / (kCopingStoneLength * coping) + 0.5f));
@@ -123,7 +122,7 @@ TP_INLINE vec3 groundAlbedo(GroundParams g, vec2 xz, vec2 footprint) {
     albedo = mix(albedo, copingAlbedo, onCoping);
   }
   const float onLawn = kTiledSurfaces && terrace > 0.0f ? bandShare(outward, across, terrace, 1e30f) : 0.0f;
-  TP_ONLY_IF(onLawn > 0.0f) {
+  if (onLawn > 0.0f) {
     TP_PRECISE float spread = clamp(1.0f - 2.0f * kLawnFrequency * max(footprint.x, footprint.y), 0.0f, 1.0f);
     TP_PRECISE float grass =
         fractalNoise01(TP_NOISE_GRADIENT, xz * kLawnFrequency, kLawnSeed, kLawnOctaves, kLawnPersistence);

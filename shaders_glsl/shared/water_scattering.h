@@ -107,8 +107,7 @@ TP_INLINE vec3 waterInScatter(TP_FRAME_PARAM vec3 extinction, vec4 scattering, f
 }
 
 // Whether the water scatters at all: with no scattering coefficient what it
-// adds is exactly 0, and in the air around the camera (whose medium then
-// scatters nothing) no scattering code runs (TP_ONLY_IF).
+// adds is exactly 0 (the camera in the air: its medium scatters nothing).
 TP_INLINE bool waterScatters(vec4 scattering) { return scattering.x + scattering.y + scattering.z > 0.0f; }
 
 // What the water between the camera and p scatters towards the camera, when
@@ -119,7 +118,7 @@ TP_INLINE vec3 viewInScatter(TP_FRAME_PARAM CameraMedium medium, vec3 p) {
   vec3 light = vec3(0.0f);
   vec3 camera = vec3(frame.cameraPosition);
   float length = distance(camera, p);
-  TP_ONLY_IF(waterScatters(medium.scattering) && length > 0.0f) {
+  if (waterScatters(medium.scattering) && length > 0.0f) {
     light = waterInScatter(TP_FRAME_ARG vec3(medium.extinction), medium.scattering, medium.water.x, medium.water.y,
                            uint(medium.water.z), camera, (p - camera) / length, length);
   }
