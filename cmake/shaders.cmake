@@ -49,6 +49,7 @@ endforeach()
 
 # The AO's apply pass that upsamples half-resolution AO as it applies it.
 list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)
+list(APPEND TIDEPOOL_SHADER_VARIANTS pool_floor_depth.frag:TP_COLOR_ONLY:pool_floor_depth.color_only.frag)
 
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS

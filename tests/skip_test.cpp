@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "gpu/submit.hpp"
 #include "gpu_test.hpp"
@@ -16,6 +17,7 @@
 #include "render/pass_kinds.hpp"
 #include "render/renderer.hpp"
 #include "shading/objects_model.hpp"
+#include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "sim/water_sleep.hpp"
 
@@ -119,8 +121,27 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {&render::passes::kCameraMedium},
        {}},
-      // The apparent-depth mode reads the frame drawn under the water.
+      // In the variants above the camera sees the floor only through the
+      // water, and the floor gives its depth and normal alone; in the next
+      // three its own light shows: the apparent-depth mode reads the frame
+      // drawn under the water, a floor that rises above the water's level
+      // comes through it, and a camera over a wall's plane looks down the
+      // slot between the water's mesh and that wall.
       {"apparent refraction", [](scene::Scene& s, const std::string&) { s.render.refraction = "apparent"; }, {}, {}},
+      {"a floor that comes through the water",
+       [](scene::Scene& s, const std::string&) {
+         s.terrain.amplitude = 2.0f * s.pool.depth;
+         s.water.level = -0.6f;
+       },
+       {},
+       {}},
+      {"camera over a wall's plane",
+       [](scene::Scene& s, const std::string&) {
+         s.camera.position = {0.5f * s.water.extent + 0.005f, 1.0f, 1.2f};
+         s.camera.target = {0.5f * s.water.extent - 0.4f, -1.0f, -1.0f};
+       },
+       {},
+       {}},
       {"camera over the water",
        [](scene::Scene& s, const std::string&) {
          s.camera.position = {0.6f, 1.6f, 1.2f};
@@ -165,6 +186,39 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       EXPECT_TRUE(anyPassUses(b, "view normal"));
     }
   }
+}
+
+// When the floor gives its depth and normal alone (render/pool.cpp).
+TEST(SkipFloor, TheFloorIsSeenOnlyThroughWaterOverItFromTheAirAwayFromTheWalls) {
+  const scene::Scene s = scene::defaultScene();
+  const float top = render::poolParams(s).terrain.w;
+  const float calm = 0.05f;              // metres over and under the rest level
+  ASSERT_LT(top, s.water.level - 0.5f);  // the default floor: deep under the water
+  EXPECT_TRUE(render::floorSeenOnlyThroughWater(s, calm, top));
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(s, s.water.level - top + 0.01f, top));      // a trough to the floor
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(s, s.ground.height - s.water.level, top));  // a crest at the rim
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(s, std::numeric_limits<float>::infinity(), top));  // no stats yet
+  scene::Scene apparent = s;
+  apparent.render.refraction = "apparent";
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(apparent, calm, top));
+  scene::Scene over = s;
+  over.camera.position = {0.6f, 1.6f, 1.2f};
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(over, calm, top));
+  // Near a wall's plane, a line steep enough across the wall finds the slot
+  // between the water's mesh and the wall; further out, higher is steeper.
+  const float half = 0.5f * s.water.extent;
+  scene::Scene beside = s;
+  beside.camera.position = {half + 0.01f, 1.3f, 2.8f};
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(beside, calm, top));
+  beside.camera.position = {half + 0.5f, 1.3f, 2.8f};
+  EXPECT_TRUE(render::floorSeenOnlyThroughWater(beside, calm, top));
+  beside.camera.position = {half + 0.5f, 40.0f, 2.8f};
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(beside, calm, top));
+  // SkipTest's variant whose floor comes through the water reaches above its level.
+  scene::Scene high = s;
+  high.terrain.amplitude = 2.0f * high.pool.depth;
+  high.water.level = -0.6f;
+  EXPECT_GT(render::poolParams(high).terrain.w, high.water.level);
 }
 
 // What the rays under the water can meet: the objects reaching below the

@@ -16,9 +16,13 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
            const gpu::Buffer& objects)
     : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
       floor_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))) {
+          ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))),
+      // No light, so no variants but with and without the G-buffer.
+      floorDepth_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor_depth.frag",
+                                                                  sizeof(glm::uvec4), {.gbuffer = needs.gbuffer}))) {
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
+  floorTop_ = pool.terrain.w;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "pool uniforms");
   const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
@@ -69,8 +73,9 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
              {.cached = true, .runIf = {}});
 }
 
-void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const {
-  graph.pass(passes::kPool, [this, targets, in](PassBuilder& pass) {
+void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
+                   std::function<bool()> onlyThroughWater) const {
+  graph.pass(passes::kPool, [this, targets, in, onlyThroughWater](PassBuilder& pass) {
     attachSurfaces(pass, targets, false);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
@@ -79,8 +84,9 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
                         .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
                         .constantStorageBuffer(5, floorVertices_);
-    return [this, targets, &set](PassContext& pc) {
-      drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor_, set, draw_); });
+    return [this, targets, &set, onlyThroughWater](PassContext& pc) {
+      const gpu::Pipeline& floor = onlyThroughWater() ? floorDepth_ : floor_;
+      drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor, set, draw_); });
     };
   });
 }

@@ -3,6 +3,7 @@
 // through the waves accumulated on the floor's mean plane
 // (shaders_glsl/caustics.vert) by a cached pass, recorded again only when the
 // water or the frame's uniforms (the sun) changed.
+#include <functional>
 #include <optional>
 
 #include "render/surfaces.hpp"
@@ -37,13 +38,20 @@ class Pool {
   const PoolDraw& draw() const { return draw_; }
   // The caustics pass, when the scene has caustics.
   void declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const;
-  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
+  // `onlyThroughWater`, asked as each frame records: whether the camera sees
+  // the floor only through the water, whose shader then shows it; the floor
+  // then gives its depth and normal alone (pool_floor_depth.frag).
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
+               std::function<bool()> onlyThroughWater) const;
+  // The floor's highest point, in metres.
+  float floorTop() const { return floorTop_; }
 
  private:
   gpu::Buffer uniforms_, floorIndices_, floorVertices_;
   gpu::Image caustics_;
   PoolDraw draw_;
-  gpu::Pipeline walls_, floor_;
+  gpu::Pipeline walls_, floor_, floorDepth_;
+  float floorTop_ = 0.0f;
   std::optional<gpu::Pipeline> causticsPipeline_;
 };
 

@@ -67,7 +67,11 @@ struct Renderer::Resources {
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
     ground.declare(graph, surfaces, in);
-    if (pool) pool->declare(graph, surfaces, in);
+    if (pool) {
+      pool->declare(graph, surfaces, in, [this] {
+        return skipping && floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop());
+      });
+    }
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
       noPool.emplace(ctx, graph, objectUniforms, ground.params());
     const PoolDraw* poolDraw = pool ? &pool->draw() : noPool ? &noPool->draw() : nullptr;

@@ -24,8 +24,6 @@ gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullM
           .fragmentSpecialization = fragmentSpecialization(needs)};
 }
 
-bool apparentDepth(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
-
 // The water's shaders have no G-buffer outputs and no colour-only variant;
 // their rays may meet glass.
 FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
@@ -40,7 +38,7 @@ FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
                            FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame)
     : above_(gpu::createGraphicsPipeline(
-          ctx, waterSide(apparentDepth(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+          ctx, waterSide(apparentRefraction(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
                          vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces)))),
       below_(gpu::createGraphicsPipeline(
           ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
@@ -53,7 +51,7 @@ WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const sce
                     &indices_,
                     uint32_t(gridIndices.size()),
                     waterSurfaceParams(scene)};
-  if (apparentDepth(scene)) {
+  if (apparentRefraction(scene)) {
     underwater_ =
         gpu::createImage2D(ctx, frame, kHdrFormat,
                            vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, "underwater image");

@@ -139,6 +139,31 @@ bool cameraOverWater(const scene::Scene& scene) {
   return shader::overWaterSquare(waterSurfaceParams(scene), glm::vec2(c.x, c.z));
 }
 
+bool apparentRefraction(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
+
+bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop) {
+  if (apparentRefraction(scene) || cameraOverWater(scene)) return false;
+  const float lowest = scene.water.level - waveHeight, highest = scene.water.level + waveHeight;
+  // How far a line must drop across a slot, the width of half a cell, to
+  // show the floor through it: from over the rim down to the water, or from
+  // the water down to the floor before it meets the wall.
+  const float drop = std::min(scene.ground.height - highest, lowest - floorTop);
+  if (!(drop > 0.0f)) return false;
+  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+  const float slot = 0.5f * p.placement.w, size = float(p.grid.x) * p.placement.w;
+  const glm::vec3 c = scene.camera.position;
+  const float walls[] = {c.x - p.placement.x, c.x - (p.placement.x + size), c.z - p.placement.z,
+                         c.z - (p.placement.z + size)};
+  // A line from the camera reaches a wall's slot at the water (no lower than
+  // its lowest) no steeper, across the wall, than the camera's height over
+  // the water by its distance from the slot.
+  for (float toWall : walls) {
+    const float across = std::abs(toWall) - slot;
+    if (!(across > 0.0f) || (c.y - lowest) * slot >= drop * across) return false;
+  }
+  return true;
+}
+
 bool hasWaterScattering(const scene::Scene& scene) {
   return scene.water.enabled && shader::waterScatters(glm::vec4(scene.water.scattering, 0.0f));
 }

@@ -31,6 +31,20 @@ std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float ex
 // surface); elsewhere the medium around it is air whatever the water does.
 bool cameraOverWater(const scene::Scene& scene);
 
+// Whether the water's rays refract by the apparent-depth guess
+// (render.refraction "apparent"), which reads the frame drawn under the water.
+bool apparentRefraction(const scene::Scene& scene);
+
+// Whether the camera sees the pool's floor only through the water's surface,
+// whose shader then shows it by its own rays: with accurate refraction, from
+// a camera away from the water's square (in the air), over water that keeps
+// within `waveHeight` of its rest level (by its last statistics) and stands
+// above the floor's highest point, when no line from the
+// camera is steep enough to see the floor through the slot between the
+// water's mesh and the walls (the mesh spans the cells' centres, half a cell
+// short of the walls).
+bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop);
+
 // The medium around the camera given the water's state (none: air), as
 // camera_medium.comp decides it on the GPU.
 shader::CameraMedium cameraMedium(const scene::Scene& scene, const sim::WaterState* water);

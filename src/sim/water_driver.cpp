@@ -55,6 +55,7 @@ void WaterDriver::goOnFrom(const WaterDriver& previous) {
   sleep_ = previous.sleep_;
   energyPerArea_ = previous.energyPerArea_;
   top_ = previous.top_;
+  largestHeight_ = previous.largestHeight_;
 }
 
 bool WaterDriver::plan(const scene::Scene& scene, uint32_t frame) {
@@ -172,12 +173,14 @@ void WaterDriver::resume(const WaterCheckpoint& checkpoint, const scene::Scene& 
 void WaterDriver::restart(const scene::Scene& scene, const WaterStats& stats) {
   sleep_.restart(stats);
   top_ = highestWater(scene, stats);
+  largestHeight_ = float(stats.maxAbsU);
 }
 
 void WaterDriver::observe(const scene::Scene& scene, const WaterStats& stats) {
   energyPerArea_ = energyOverArea(scene, stats);
   sleep_.observe(energyPerArea_);
   top_ = highestWater(scene, stats);
+  largestHeight_ = float(stats.maxAbsU);
 }
 
 }  // namespace tp::sim

@@ -82,6 +82,9 @@ class WaterDriver {
   // The highest the water's surface can be: the rim, unless the last stats
   // saw a wave over it.
   float top() const { return top_; }
+  // The largest height over or under the rest level the last stats saw
+  // (infinite before any).
+  float largestHeight() const { return largestHeight_; }
 
  private:
   void restart(const scene::Scene& scene, const WaterStats& stats);
@@ -102,6 +105,7 @@ class WaterDriver {
   WaterSleep sleep_;
   double energyPerArea_ = 0.0;
   float top_ = std::numeric_limits<float>::infinity();
+  float largestHeight_ = std::numeric_limits<float>::infinity();
 };
 
 }  // namespace tp::sim
