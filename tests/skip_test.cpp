@@ -214,6 +214,8 @@ TEST(SkipFloor, TheFloorIsSeenOnlyThroughWaterOverItFromTheAirAwayFromTheWalls) 
   EXPECT_TRUE(render::floorSeenOnlyThroughWater(beside, calm, top));
   beside.camera.position = {half + 0.5f, 40.0f, 2.8f};
   EXPECT_FALSE(render::floorSeenOnlyThroughWater(beside, calm, top));
+  beside.camera.position = {half + 0.5f, s.ground.height - 0.01f, 2.8f};  // under the ground
+  EXPECT_FALSE(render::floorSeenOnlyThroughWater(beside, calm, top));
   // SkipTest's variant whose floor comes through the water reaches above its level.
   scene::Scene high = s;
   high.terrain.amplitude = 2.0f * high.pool.depth;

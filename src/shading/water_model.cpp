@@ -142,7 +142,9 @@ bool cameraOverWater(const scene::Scene& scene) {
 bool apparentRefraction(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
 
 bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop) {
-  if (apparentRefraction(scene) || cameraOverWater(scene)) return false;
+  const glm::vec3 c = scene.camera.position;
+  // Under the rim, away from the water, the camera is under the ground.
+  if (apparentRefraction(scene) || cameraOverWater(scene) || !(c.y > scene.ground.height)) return false;
   const float lowest = scene.water.level - waveHeight, highest = scene.water.level + waveHeight;
   // How far a line must drop across a slot, the width of half a cell, to
   // show the floor through it: from over the rim down to the water, or from
@@ -151,7 +153,6 @@ bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, floa
   if (!(drop > 0.0f)) return false;
   const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
   const float slot = 0.5f * p.placement.w, size = float(p.grid.x) * p.placement.w;
-  const glm::vec3 c = scene.camera.position;
   const float walls[] = {c.x - p.placement.x, c.x - (p.placement.x + size), c.z - p.placement.z,
                          c.z - (p.placement.z + size)};
   // A line from the camera reaches a wall's slot at the water (no lower than

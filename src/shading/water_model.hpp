@@ -37,11 +37,11 @@ bool apparentRefraction(const scene::Scene& scene);
 
 // Whether the camera sees the pool's floor only through the water's surface,
 // whose shader then shows it by its own rays: with accurate refraction, from
-// a camera away from the water's square (in the air), over water that keeps
-// within `waveHeight` of its rest level (by its last statistics) and stands
-// above the floor's highest point, when no line from the
+// a camera over the rim and away from the water's square, over water that
+// keeps within `waveHeight` of its rest level (by its last statistics)
+// between the floor's highest point and the rim, when no line from the
 // camera is steep enough to see the floor through the slot between the
-// water's mesh and the walls (the mesh spans the cells' centres, half a cell
+// water's mesh and a wall (the mesh spans the cells' centres, half a cell
 // short of the walls).
 bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop);
 
