@@ -49,6 +49,7 @@ endforeach()
 
 # The AO's apply pass that upsamples half-resolution AO as it applies it.
 list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)
+# The floor's depth and normal alone (render/pool.cpp), without the G-buffer for frames without AO.
 list(APPEND TIDEPOOL_SHADER_VARIANTS pool_floor_depth.frag:TP_COLOR_ONLY:pool_floor_depth.color_only.frag)
 
 function(tidepool_compile_shaders)

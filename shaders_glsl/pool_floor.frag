@@ -25,5 +25,5 @@ void main() {
   color = vec4(lambertRadiance(frame, albedo, n, caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, caustic) * toCamera);
+  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, 1.0) * toCamera);
 }

@@ -48,6 +48,13 @@ size_t differingPixels(const render::RenderedFrame& a, const render::RenderedFra
   return n;
 }
 
+// A terrain as high as the pool allows under water lowered to meet it: the
+// floor comes through the water's surface.
+void raiseTheFloorThroughTheWater(scene::Scene& s) {
+  s.terrain.amplitude = 2.0f * s.pool.depth;
+  s.water.level = -0.6f;
+}
+
 struct Variant {
   std::string name;
   std::function<void(scene::Scene&, const std::string& dir)> change;
@@ -129,10 +136,7 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       // slot between the water's mesh and that wall.
       {"apparent refraction", [](scene::Scene& s, const std::string&) { s.render.refraction = "apparent"; }, {}, {}},
       {"a floor that comes through the water",
-       [](scene::Scene& s, const std::string&) {
-         s.terrain.amplitude = 2.0f * s.pool.depth;
-         s.water.level = -0.6f;
-       },
+       [](scene::Scene& s, const std::string&) { raiseTheFloorThroughTheWater(s); },
        {},
        {}},
       {"camera over a wall's plane",
@@ -218,8 +222,7 @@ TEST(SkipFloor, TheFloorIsSeenOnlyThroughWaterOverItFromTheAirAwayFromTheWalls) 
   EXPECT_FALSE(render::floorSeenOnlyThroughWater(beside, calm, top));
   // SkipTest's variant whose floor comes through the water reaches above its level.
   scene::Scene high = s;
-  high.terrain.amplitude = 2.0f * high.pool.depth;
-  high.water.level = -0.6f;
+  raiseTheFloorThroughTheWater(high);
   EXPECT_GT(render::poolParams(high).terrain.w, high.water.level);
 }
 
