@@ -31,20 +31,25 @@ foreach(surface pool_walls pool_floor sphere box)
     ${surface}.frag:TP_NO_SHADOWS+TP_SCATTERING:${surface}.no_shadows.scattering.frag
     ${surface}.frag:TP_COLOR_ONLY+TP_NO_SHADOWS+TP_SCATTERING:${surface}.color_only.no_shadows.scattering.frag)
 endforeach()
-foreach(water water_surface water_surface_apparent water_surface_below glass)
+foreach(water water_surface.frag water_surface_deferred.comp water_surface_apparent.frag water_surface_below.frag
+        glass.frag)
+  string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
+  string(REGEX MATCH "[a-z]+$" stage ${water})
   list(APPEND TIDEPOOL_SHADER_VARIANTS
-    ${water}.frag:TP_NO_SHADOWS:${water}.no_shadows.frag
-    ${water}.frag:TP_SCATTERING:${water}.scattering.frag
-    ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING:${water}.no_shadows.scattering.frag)
+    ${water}:TP_NO_SHADOWS:${name}.no_shadows.${stage}
+    ${water}:TP_SCATTERING:${name}.scattering.${stage}
+    ${water}:TP_NO_SHADOWS+TP_SCATTERING:${name}.no_shadows.scattering.${stage})
 endforeach()
 # The water's rays meeting glass (lib/scene_rays.glsl's backdrop), for
 # scenes with glass spheres: the casts they add cost compile time.
-foreach(water water_surface water_surface_apparent water_surface_below)
+foreach(water water_surface.frag water_surface_deferred.comp water_surface_apparent.frag water_surface_below.frag)
+  string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
+  string(REGEX MATCH "[a-z]+$" stage ${water})
   list(APPEND TIDEPOOL_SHADER_VARIANTS
-    ${water}.frag:TP_GLASS:${water}.glass.frag
-    ${water}.frag:TP_NO_SHADOWS+TP_GLASS:${water}.no_shadows.glass.frag
-    ${water}.frag:TP_SCATTERING+TP_GLASS:${water}.scattering.glass.frag
-    ${water}.frag:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${water}.no_shadows.scattering.glass.frag)
+    ${water}:TP_GLASS:${name}.glass.${stage}
+    ${water}:TP_NO_SHADOWS+TP_GLASS:${name}.no_shadows.glass.${stage}
+    ${water}:TP_SCATTERING+TP_GLASS:${name}.scattering.glass.${stage}
+    ${water}:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${name}.no_shadows.scattering.glass.${stage})
 endforeach()
 
 # The AO's apply pass that upsamples half-resolution AO as it applies it.

@@ -16,7 +16,7 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
   vec3 transmitted = vec3(0.0);
-  const vec3 t = refract(view, n, 1.0 / surface.extinction.w);
+  const vec3 t = refractedFromAbove(surface, view, n);
   if (dot(t, t) > 0.0 && t.y < 0.0) {
     const ivec2 texel = ivec2(apparentDepthTexel(pool, frame, worldPosition, t));
     const float distance = apparentDepthDistance(pool, worldPosition, t);

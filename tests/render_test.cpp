@@ -194,9 +194,11 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   // Frame 0 again and again: no steps to take, and the cached passes (sky,
   // caustics) ran on the first; the camera is away from the water (no camera
   // medium). The sky's background after the opaque surfaces, where they left
-  // the far plane.
-  const std::vector<std::string> opaque{"ground",    "pool",      "objects",  "background", "ssao",
-                                        "ao blur x", "ao blur y", "ao apply", "water",      "haze"};
+  // the far plane. The water deferred: its G-buffer, tiles, shading and the
+  // side seen from below.
+  const std::vector<std::string> opaque{"ground",    "pool",        "objects",  "background",     "ssao",
+                                        "ao blur x", "ao blur y",   "ao apply", "water g-buffer", "water tiles",
+                                        "water",     "water below", "haze"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
     all.insert(all.end(), tail.begin(), tail.end());

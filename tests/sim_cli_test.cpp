@@ -183,8 +183,9 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   EXPECT_EQ(table.header, "width,height,pass,wall_ms,gpu_ms,runs,frame_wall_ms,fps,frames,device") << table.header;
   // The default scene's frame after the first, pass by pass: simulate,
   // caustics, background, ground, pool, objects, four AO passes (balanced:
-  // no upsample), water, haze and the HDR readback; at each of the two sizes.
-  EXPECT_EQ(table.rows, 2 * 13);
+  // no upsample), the water's four (deferred: G-buffer, tiles, shading, the
+  // side from below), haze and the HDR readback; at each of the two sizes.
+  EXPECT_EQ(table.rows, 2 * 16);
   for (const char* pass : {"water", "simulate", "ssao", "readback hdr"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }

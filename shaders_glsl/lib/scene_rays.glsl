@@ -18,6 +18,7 @@
 
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
+#include "lib/ray_differential.glsl"  // reads `frame` in place
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform sampler2D skyTexture;
 layout(binding = 3) uniform Pool { PoolParams pool; };
@@ -28,7 +29,9 @@ layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  //
 #include "shared/pool_trace.h"
 #include "shared/object_cast.h"
 
-vec3 sky(vec3 direction) { return texture(skyTexture, directionToEquirect(direction)).rgb; }
+// Both textures have one level: level 0 is what an implicit lookup reads, and
+// compute shaders (water_surface_deferred.comp) have no implicit lookups.
+vec3 sky(vec3 direction) { return textureLod(skyTexture, directionToEquirect(direction), 0.0).rgb; }
 
 // What the water scatters into the ray from `start` along `dir` (unit, under
 // the water) over `length`; nothing, and no code, in the variants for water
@@ -47,7 +50,7 @@ bool inPoolWater(vec3 p) { return pool.box.x > 0.0 && max(abs(p.x), abs(p.z)) < 
 
 // The sun through the waves at `met` under the water, relative to flat
 // water: the caustics texture at its light line.
-float causticsAt(vec3 met) { return texture(caustics, causticsUv(pool, frame.sunDirection.xyz, met)).r; }
+float causticsAt(vec3 met) { return textureLod(caustics, causticsUv(pool, frame.sunDirection.xyz, met), 0.0).r; }
 
 // The sun at `met` under the water: its share in view, through the waves.
 float sunUnderWater(vec3 met) { return frameSunShare(met) * causticsAt(met); }
@@ -242,20 +245,6 @@ vec3 radianceAbove(vec3 p, vec3 r) {
   const vec3 wallNormal = poolWallNormal(walls, r);
   return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0), sunShare), r,
                         wallNormal, pool.wallGloss.xy);
-}
-
-// A ray's screen derivatives (Igehy 1999): of its origin and of its unit
-// direction, one pixel right (x) and down (y).
-struct RayDifferential {
-  vec3 originX, originY, directionX, directionY;
-};
-
-// Taken where every lane of the pixel quad runs the same code: derivatives
-// of values computed in divergent code (a cast's hit) are undefined. Scaled
-// to the filter's width (FrameUniforms::sampling).
-RayDifferential rayDifferential(vec3 origin, vec3 direction) {
-  const float w = frame.sampling.x;
-  return RayDifferential(w * dFdx(origin), w * dFdy(origin), w * dFdx(direction), w * dFdy(direction));
 }
 
 // The footprint in xz of the pixel where its ray, origin + s dir, meets a

@@ -1,22 +1,13 @@
-// The water surface's shading shared by its two refraction modes: inputs,
-// the push constants, what its rays see (lib/scene_rays.glsl, bindings 0-4
-// and 6-8), Schlick's Fresnel and the surface seen from below.
+// The water surface's fragment shaders' common part: inputs and output, what
+// its rays see (lib/water_light.glsl, bindings 0-4 and 6-8) and the surface
+// seen from below.
 #ifndef TP_LIB_WATER_SHADING
 #define TP_LIB_WATER_SHADING
-#include "lib/scene_rays.glsl"
+#include "lib/water_light.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 0) out vec4 color;
-#include "shared/water_surface.h"
-layout(push_constant) uniform Push { WaterSurfaceParams surface; };
-
-// Schlick's Fresnel reflectance, from the cosine of the angle on the air side.
-float waterFresnel(float cosAir) {
-  const float ior = surface.extinction.w;
-  const float f0 = ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
-  return f0 + (1.0 - f0) * pow(1.0 - clamp(cosAir, 0.0, 1.0), 5.0);
-}
 
 // The surface seen from under the water (the back of the mesh, whose front
 // faces the sky): reflected light from below, the refracted ray to the air

@@ -10,8 +10,18 @@ struct WaterSurfaceParams {
   vec4 placement;   // x, z: world position of the grid's corner (cell x = 0, z = 0); y: rest level; w: h
   vec4 extinction;  // rgb: the water's absorption plus scattering coefficients, 1/m; w: index of refraction
   vec4 scattering;  // rgb: scattering coefficient in 1/m; w: its phase's anisotropy (water_scattering.h)
-  uvec4 grid;       // x: cells per side; y: the pieces of the scattered sun's shadows (water_scattering.h); zw unused
+  uvec4 grid;  // x: cells per side; y: the pieces of the scattered sun's shadows (water_scattering.h);
+               // z: the frame's tag, w: shading tiles per row (the deferred shading's: lib/water_gbuffer.glsl)
 };
+
+// The deferred shading of the surface seen from above works in square tiles
+// of this many pixels a side: those the surface covers are listed, and one
+// workgroup shades each.
+#define TP_WATER_SHADING_TILE 8
+// The water's G-buffer holds this many RGBA32F targets (lib/water_gbuffer.glsl).
+#define TP_WATER_GBUFFER_TARGETS 5
+// The list of tiles to shade: the indirect dispatch's arguments, then the tiles.
+#define TP_WATER_SHADING_LIST_HEADER 4
 
 // The medium around the camera, decided on the GPU where the water lives
 // (camera_medium.comp; render/water_model.cpp for the CPU reference) and read
@@ -21,6 +31,12 @@ struct CameraMedium {
   vec4 scattering;  // rgb: scattering coefficient in 1/m (0 in air); w: its phase's anisotropy
   vec4 water;       // x: the water's rest level; y: its index of refraction; z: the scattering's shadow pieces; w unused
 };
+
+// The view ray (unit, from the camera) refracted into the water through the
+// surface at normal n (unit, up): the zero vector past the critical angle.
+TP_INLINE vec3 refractedFromAbove(WaterSurfaceParams s, vec3 view, vec3 n) {
+  return refract(view, n, 1.0f / s.extinction.w);
+}
 
 // Where world xz falls on the surface mesh (vertex (i, j) at cell centre
 // ((i + 1/2) h, (j + 1/2) h)): xy the first vertex (i, j) of its quad, zw the

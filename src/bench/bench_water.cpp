@@ -136,7 +136,7 @@ int runBenchWater(const BenchWaterOptions& o) {
         render::RenderedFrame frame;
         const PassTimes t =
             medianPassTimes(renderer, {.frame = o.frame, .hdr = true}, o.repeats,
-                            {[](const render::PassKind* p) { return p == &render::passes::kWater; },
+                            {[](const render::PassKind* p) { return render::passes::isWater(p); },
                              [](const render::PassKind* p) { return p == &render::passes::kUnderwater; }},
                             frame);
         const double waterMs = t.groups[0], underwaterMs = t.groups[1];

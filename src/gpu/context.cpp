@@ -155,7 +155,8 @@ vk::raii::Device createDevice(const vk::raii::PhysicalDevice& physical, uint32_t
               .enabledExtensionCount = uint32_t(extensions.size()),
               .ppEnabledExtensionNames = extensions.data(),
           },
-          vk::PhysicalDeviceFeatures2{},
+          // The deferred water's G-buffer pass tags its tiles from the fragment stage.
+          vk::PhysicalDeviceFeatures2{.features = {.fragmentStoresAndAtomics = VK_TRUE}},
           vk::PhysicalDeviceVulkan12Features{.hostQueryReset = VK_TRUE},
           // maintenance4: glslang's SPIR-V 1.6 declares compute local sizes with LocalSizeId.
           vk::PhysicalDeviceVulkan13Features{

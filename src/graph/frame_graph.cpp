@@ -24,6 +24,13 @@ UseInfo info(Use use) {
       return {{S::eComputeShader, A::eShaderStorageWrite}, L::eGeneral, false, true};
     case Use::ComputeReadWrite:
       return {{S::eComputeShader, A::eShaderStorageRead | A::eShaderStorageWrite}, L::eGeneral, true, true};
+    case Use::ComputeReadIndirect:
+      return {{S::eComputeShader | S::eDrawIndirect, A::eShaderStorageRead | A::eIndirectCommandRead},
+              L::eGeneral,
+              true,
+              false};
+    case Use::FragmentStorageWrite:
+      return {{S::eFragmentShader, A::eShaderStorageWrite}, L::eGeneral, false, true};
     case Use::FragmentSample:
       return {{S::eFragmentShader, A::eShaderSampledRead}, L::eShaderReadOnlyOptimal, true, false};
     case Use::ComputeSample:

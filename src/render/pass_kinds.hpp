@@ -25,7 +25,10 @@ inline constexpr PassKind kReadbackViewNormal{"readback view normal"};
 inline constexpr PassKind kUnderwater{"underwater"};
 inline constexpr PassKind kGlassBackFaces{"glass back faces"};
 inline constexpr PassKind kGlass{"glass"};
+inline constexpr PassKind kWaterGbuffer{"water g-buffer"};
+inline constexpr PassKind kWaterTiles{"water tiles"};
 inline constexpr PassKind kWater{"water"};
+inline constexpr PassKind kWaterBelow{"water below"};
 inline constexpr PassKind kHaze{"haze"};
 inline constexpr PassKind kAov{"aov"};
 inline constexpr PassKind kReadbackNormal{"readback normal"};
@@ -39,6 +42,15 @@ inline constexpr PassKind kReadbackLdr{"readback ldr"};
 inline bool isAo(const PassKind* kind) {
   for (const PassKind* ao : {&kSsao, &kAoBlurX, &kAoBlurY, &kAoUpsample, &kAoApply}) {
     if (kind == ao) return true;
+  }
+  return false;
+}
+
+// The water surface's passes: forward, its one pass; deferred, the G-buffer,
+// the tiles, the shading and the side seen from below.
+inline bool isWater(const PassKind* kind) {
+  for (const PassKind* water : {&kWaterGbuffer, &kWaterTiles, &kWater, &kWaterBelow}) {
+    if (kind == water) return true;
   }
   return false;
 }

@@ -123,7 +123,7 @@ struct Renderer::Resources {
   // the camera's medium, the pool and its caustics.
   void declareWater(const gpu::Context& ctx, const scene::Scene& scene, vk::Extent2D frame, const FrameInputs& in) {
     water.emplace(ctx, scene, skipping);
-    waterSurface.emplace(ctx, graph, scene, needs, water->stepper(), frame);
+    waterSurface.emplace(ctx, graph, scene, needs, water->stepper(), frame, skipping);
     const WaterDraw& draw = waterSurface->draw();
     // The live drops and moves, the steps to this frame with the scene's
     // drops due on the way, and the stats that say whether the water is

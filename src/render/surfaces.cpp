@@ -85,12 +85,13 @@ void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingA
 }
 
 std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds needs) {
-  std::string name = fragmentShader.substr(0, fragmentShader.rfind('.'));
+  const size_t stage = fragmentShader.rfind('.');
+  std::string name = fragmentShader.substr(0, stage);
   if (!needs.gbuffer) name += ".color_only";
   if (!needs.shadows) name += ".no_shadows";
   if (needs.scattering) name += ".scattering";
   if (needs.glass) name += ".glass";
-  return name + ".frag";
+  return name + fragmentShader.substr(stage);
 }
 
 FragmentNeeds surfaceNeeds(const scene::Scene& scene, bool gbuffer, bool skipping) {

@@ -97,9 +97,10 @@ FragmentNeeds surfaceNeeds(const scene::Scene& scene, bool gbuffer, bool skippin
 // The fragment shader's specialization constants (shared/specialization.h).
 gpu::Specialization fragmentSpecialization(FragmentNeeds needs);
 
-// The variant of a fragment shader NAME.frag: NAME, then .color_only
+// The variant of a fragment shader NAME.frag (or of the compute shader
+// that shades the water deferred, NAME.comp): NAME, then .color_only
 // without the G-buffer, .no_shadows without shadows, .scattering with
-// scattering, .glass with glass, then .frag.
+// scattering, .glass with glass, then .frag (.comp).
 std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds needs);
 
 // A pipeline of an opaque surface: colour, the two G-buffer targets (or,

@@ -36,7 +36,7 @@ FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
 }  // namespace
 
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
-                           FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame)
+                           FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred)
     : above_(gpu::createGraphicsPipeline(
           ctx, waterSide(apparentRefraction(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
                          vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces)))),
@@ -56,6 +56,8 @@ WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const sce
         gpu::createImage2D(ctx, frame, kHdrFormat,
                            vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, "underwater image");
     underwaterRef_ = graph.image("underwater", underwater_);
+  } else if (deferred) {
+    deferred_.emplace(ctx, graph, frame, waterNeeds(scene, surfaces));
   }
 }
 
@@ -76,7 +78,10 @@ void WaterSurface::declareUnderwater(FrameGraph& graph, const GraphImage& color)
 
 void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, const PoolDraw& pool,
                            const FrameInputs& in) const {
-  graph.pass(passes::kWater, [this, targets, pool, in](PassBuilder& pass) {
+  // Deferred, the side seen from above is shaded before the side seen from
+  // below is drawn, which the depth test then keeps where it is nearer.
+  if (deferred_) deferred_->declare(graph, targets, draw_, pool, in);
+  graph.pass(deferred_ ? passes::kWaterBelow : passes::kWater, [this, targets, pool, in](PassBuilder& pass) {
     const gpu::Image& color = pass.attach(targets.color, Use::ColorReadWrite);
     const gpu::Image& depth = pass.attach(targets.depth, Use::DepthReadWrite);
     Bindings& set = pass.bindings()
@@ -93,7 +98,9 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
         .constantStorageBuffer(8, *pool.floorVertices);
     return [this, &color, &depth, &set](PassContext& pc) {
       drawOver(pc.cmd, color, depth, [&] {
-        for (const gpu::Pipeline* side : {&above_, &below_}) {
+        const std::vector<const gpu::Pipeline*> sides =
+            deferred_ ? std::vector{&below_} : std::vector{&above_, &below_};
+        for (const gpu::Pipeline* side : sides) {
           gpu::bindPipeline(pc.cmd, *side, draw_.params);
           set.bind(pc.cmd, *side, pc.descriptors);
           drawWater(pc.cmd, draw_);

@@ -8,6 +8,7 @@
 
 #include "render/pool.hpp"
 #include "render/surfaces.hpp"
+#include "render/water_deferred.hpp"
 #include "render/water_draw.hpp"
 #include "scene/scene.hpp"
 #include "sim/gpu_stepper.hpp"
@@ -17,9 +18,11 @@ namespace tp::render {
 class WaterSurface {
  public:
   // `surfaces`: what the opaque surfaces need (surfaceNeeds); the water's
-  // shaders need the same and may meet glass.
+  // shaders need the same and may meet glass. `deferred`: the accurate
+  // mode's surface seen from above shaded once per pixel (WaterDeferred),
+  // rather than by its forward shader.
   WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds surfaces,
-               sim::GpuStepper& stepper, vk::Extent2D frame);
+               sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred);
   const WaterDraw& draw() const { return draw_; }
   // The copy of the pool under the water, for the apparent-depth mode (else nothing).
   void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;
@@ -31,6 +34,7 @@ class WaterSurface {
   gpu::Pipeline above_, below_;
   gpu::Image underwater_;
   std::optional<GraphImage> underwaterRef_;  // the apparent-depth mode's
+  std::optional<WaterDeferred> deferred_;
 };
 
 }  // namespace tp::render
