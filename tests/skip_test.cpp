@@ -130,6 +130,12 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {&render::passes::kCameraMedium},
        {}},
+      {"a sphere's shadow on the ground",
+       [](scene::Scene& s, const std::string&) {
+         s.spheres[0].center = {-2.6f, 0.4f, -1.0f};  // resting on the ground past the far wall
+       },
+       {},
+       {}},
       {"water that scatters, the camera under it",
        [](scene::Scene& s, const std::string&) {
          s.water.scattering = {0.08f, 0.12f, 0.14f};

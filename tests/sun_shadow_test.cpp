@@ -4,10 +4,13 @@
 // exactly (through flat water by Snell's law) in double precision.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/constants.hpp>
+#include <vector>
 
+#include "shading/shadow_reach.hpp"
 #include "shared/sun_shadow.h"
 
 namespace tp::test {
@@ -277,6 +280,56 @@ TEST(SunShadow, BoxShadowRaysAgreeWithTheBoxCast) {
   EXPECT_GT(hits, rays / 10);
   EXPECT_LT(hits, rays * 9 / 10);
   EXPECT_TRUE(shader::rayMeetsBox(glm::vec3(center), glm::vec3(0.0f, 1.0f, 0.0f), center, halfSize));
+}
+
+// groundOutOfObjectShadows against the shadows themselves: wherever it says
+// no object's shadow reaches the ground, every point of the ground sampled
+// on a 2 cm grid around the pool sees the whole sun; and the cases include
+// casters whose shadows do fall on it, which the rule must not miss.
+TEST(ShadowReach, TheGroundOutOfReachSeesTheWholeSunEverywhere) {
+  struct Case {
+    const char* name;
+    glm::vec4 sphere;                  // w 0: none
+    glm::vec4 boxCenter, boxHalfSize;  // halfSize 0: none
+    double elevation, azimuth;
+    bool outOfReach;  // what the rule must say
+  };
+  const float h = 2.0f, ground = 0.0f;  // the default pool's hole and ground
+  const std::vector<Case> cases{
+      {"the default scene's sphere", {0.9f, -0.2f, -0.7f, 0.4f}, {}, {}, 35.0, 60.0, true},
+      {"a sphere deep in the pool, low sun", {0.0f, -0.8f, 0.0f, 0.3f}, {}, {}, 8.0, 10.0, true},
+      {"a sphere above the rim by the wall", {1.6f, 0.3f, 0.0f, 0.4f}, {}, {}, 35.0, 180.0, false},
+      {"a sphere on the ground", {3.0f, 0.4f, 1.0f, 0.4f}, {}, {}, 50.0, 20.0, false},
+      {"a sphere near the wall, sun over it", {1.5f, -0.1f, 0.0f, 0.4f}, {}, {}, 35.0, 0.0, true},
+      {"a box in the pool", {}, {0.0f, -0.3f, 0.5f, 0.3f}, {0.3f, 0.3f, 0.4f, 0.0f}, 35.0, 60.0, true},
+      {"a tall box by the wall", {}, {1.5f, 0.2f, 0.0f, 0.0f}, {0.3f, 0.6f, 0.3f, 0.0f}, 30.0, 180.0, false},
+  };
+  int shadedCases = 0;
+  for (const Case& k : cases) {
+    SCOPED_TRACE(k.name);
+    ShadowCasters c = casters(float(glm::radians(1.0)));
+    const bool sphere = k.sphere.w > 0.0f, box = k.boxHalfSize.x > 0.0f;
+    c.sun = glm::vec4(c.sun.x, sphere ? 1.0f : 0.0f, box ? 1.0f : 0.0f, 1.0f);
+    c.spheres[0] = k.sphere;
+    c.boxCenter[0] = k.boxCenter;
+    c.boxHalfSize[0] = k.boxHalfSize;
+    c.pool = glm::vec4(h, ground, -0.15f, 1.333f);
+    const glm::vec3 toSun = glm::vec3(sunTowards(k.elevation, k.azimuth));
+    const bool rule = render::groundOutOfObjectShadows(c, toSun, ground, h);
+    EXPECT_EQ(rule, k.outOfReach);
+    int shaded = 0;
+    for (int i = 0; i <= 500; ++i) {
+      for (int j = 0; j <= 500; ++j) {
+        const glm::vec3 p(-5.0f + 0.02f * float(i), ground, -5.0f + 0.02f * float(j));
+        if (std::max(std::abs(p.x), std::abs(p.z)) < h) continue;  // the pool's hole
+        shaded += shader::openAirSunVisibility(c, p, toSun) < 1.0f;
+      }
+    }
+    if (rule) EXPECT_EQ(shaded, 0);
+    shadedCases += shaded > 0;
+    std::printf("%s: %s, %d points of the ground shaded\n", k.name, rule ? "out of reach" : "may reach", shaded);
+  }
+  EXPECT_GE(shadedCases, 2);  // the grid finds the shadows the rule must not miss
 }
 
 }  // namespace tp::test

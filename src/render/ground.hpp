@@ -1,6 +1,8 @@
 #pragma once
 // The checkered ground plane around the pool's hole, depth tested; the first
 // surface, so it clears depth and the G-buffer.
+#include <functional>
+
 #include "render/surfaces.hpp"
 #include "scene/scene.hpp"
 #include "shared/ground.h"
@@ -13,11 +15,16 @@ class Ground {
  public:
   Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs);
   const shader::GroundParams& params() const { return params_; }
-  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in) const;
+  // `outOfObjectShadows`, asked as each frame records: no sphere's or box's
+  // shadow can fall on the ground (groundOutOfObjectShadows), so it draws
+  // without their code.
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
+               std::function<bool()> outOfObjectShadows) const;
 
  private:
   shader::GroundParams params_;
   gpu::Pipeline pipeline_;
+  gpu::Pipeline unshadowed_;  // without the spheres' and boxes' shadows
 };
 
 }  // namespace tp::render

@@ -29,6 +29,7 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/frustum.hpp"
 #include "shading/objects_model.hpp"
+#include "shading/shadow_reach.hpp"
 #include "shading/water_model.hpp"
 #include "sim/water_driver.hpp"
 
@@ -66,7 +67,11 @@ struct Renderer::Resources {
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
-    ground.declare(graph, surfaces, in);
+    ground.declare(graph, surfaces, in, [this] {
+      const auto& u = *static_cast<const shader::FrameUniforms*>(uniforms.mapped);
+      return skipping && groundOutOfObjectShadows(u.shadows, glm::vec3(u.sunDirection), ground.params().plane.y,
+                                                  ground.params().plane.w);
+    });
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
         return skipping && floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop());
