@@ -325,7 +325,9 @@ TEST(ShadowReach, TheGroundOutOfReachSeesTheWholeSunEverywhere) {
         shaded += shader::openAirSunVisibility(c, p, toSun) < 1.0f;
       }
     }
-    if (rule) EXPECT_EQ(shaded, 0);
+    if (rule) {
+      EXPECT_EQ(shaded, 0);
+    }
     shadedCases += shaded > 0;
     std::printf("%s: %s, %d points of the ground shaded\n", k.name, rule ? "out of reach" : "may reach", shaded);
   }
