@@ -9,9 +9,7 @@
 #include "lib/water_shading.glsl"
 
 void main() {
-  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const vec3 n = normalize(worldNormal);
-  const vec3 t = refractedFromAbove(surface, view, n);
-  const RayDifferential rd = rayDifferential(worldPosition, normalize(t));
-  color = vec4(seenFromAbove(worldPosition, view, n, t, rd), 1.0);
+  const ViewFromAbove v = viewFromAbove(surface, frame.cameraPosition.xyz, worldPosition, worldNormal);
+  const RayDifferential rd = rayDifferential(worldPosition, normalize(v.refracted));
+  color = vec4(seenFromAbove(worldPosition, v, rd), 1.0);
 }

@@ -12,16 +12,15 @@
 layout(binding = 5) uniform sampler2D underwater;
 
 void main() {
-  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const vec3 n = normalize(worldNormal);
-  const vec3 reflected = radianceAbove(worldPosition, reflect(view, n));
+  const ViewFromAbove v = viewFromAbove(surface, frame.cameraPosition.xyz, worldPosition, worldNormal);
+  const vec3 reflected = radianceAbove(worldPosition, reflect(v.view, v.normal));
   vec3 transmitted = vec3(0.0);
-  const vec3 t = refractedFromAbove(surface, view, n);
+  const vec3 t = v.refracted;
   if (dot(t, t) > 0.0 && t.y < 0.0) {
     const ivec2 texel = ivec2(apparentDepthTexel(pool, frame, worldPosition, t));
     const float distance = apparentDepthDistance(pool, worldPosition, t);
     transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.extinction.rgb * distance) +
                   inScatter(worldPosition, t, distance);
   }
-  color = vec4(mix(transmitted, reflected, waterFresnel(-dot(view, n))), 1.0);
+  color = vec4(mix(transmitted, reflected, waterFresnel(-dot(v.view, v.normal))), 1.0);
 }

@@ -31,8 +31,6 @@ void main() {
   g.t[3] = imageLoad(gbuffer3, p);
   g.t[4] = imageLoad(gbuffer4, p);
   const WaterSample s = unpackWaterSample(g);
-  const vec3 view = normalize(s.position - frame.cameraPosition.xyz);
-  const vec3 n = normalize(s.normal);
-  const vec3 t = refractedFromAbove(surface, view, n);
-  imageStore(colorImage, p, vec4(seenFromAbove(s.position, view, n, t, s.rd), 1.0));
+  const ViewFromAbove v = viewFromAbove(surface, frame.cameraPosition.xyz, s.position, s.normal);
+  imageStore(colorImage, p, vec4(seenFromAbove(s.position, v, s.rd), 1.0));
 }

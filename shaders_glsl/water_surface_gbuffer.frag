@@ -23,11 +23,9 @@ layout(location = 3) out vec4 target3;
 layout(location = 4) out vec4 target4;
 
 void main() {
-  // As water_surface.frag computes them, for the same derivatives.
-  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const vec3 n = normalize(worldNormal);
-  const vec3 t = refractedFromAbove(surface, view, n);
-  const RayDifferential rd = rayDifferential(worldPosition, normalize(t));
+  // As water_surface.frag takes them, for the same derivatives.
+  const ViewFromAbove v = viewFromAbove(surface, frame.cameraPosition.xyz, worldPosition, worldNormal);
+  const RayDifferential rd = rayDifferential(worldPosition, normalize(v.refracted));
   const WaterGbufferTexels g = packWaterSample(WaterSample(worldPosition, worldNormal, rd), float(surface.grid.z));
   target0 = g.t[0];
   target1 = g.t[1];

@@ -16,14 +16,15 @@ float waterFresnel(float cosAir) {
   return f0 + (1.0 - f0) * pow(1.0 - clamp(cosAir, 0.0, 1.0), 5.0);
 }
 
-// The light leaving the surface at `position` towards the camera along
-// -view; t = refractedFromAbove(surface, view, n), rd the differentials of the
-// refracted ray (of position and normalize(t)).
-vec3 seenFromAbove(vec3 position, vec3 view, vec3 n, vec3 t, RayDifferential rd) {
-  const vec3 reflected = radianceAbove(position, reflect(view, n));
+// The light leaving the surface at `position` towards the camera, seen as
+// `v` says; rd the differentials of the refracted ray (of position and
+// normalize(v.refracted)).
+vec3 seenFromAbove(vec3 position, ViewFromAbove v, RayDifferential rd) {
+  const vec3 reflected = radianceAbove(position, reflect(v.view, v.normal));
   vec3 transmitted = vec3(0.0);
+  const vec3 t = v.refracted;
   if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(position, normalize(t), rd);
-  return mix(transmitted, reflected, waterFresnel(-dot(view, n)));
+  return mix(transmitted, reflected, waterFresnel(-dot(v.view, v.normal)));
 }
 
 #endif

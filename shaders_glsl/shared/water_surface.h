@@ -32,10 +32,21 @@ struct CameraMedium {
   vec4 water;       // x: the water's rest level; y: its index of refraction; z: the scattering's shadow pieces; w unused
 };
 
-// The view ray (unit, from the camera) refracted into the water through the
-// surface at normal n (unit, up): the zero vector past the critical angle.
-TP_INLINE vec3 refractedFromAbove(WaterSurfaceParams s, vec3 view, vec3 n) {
-  return refract(view, n, 1.0f / s.extinction.w);
+// A point of the surface seen from the camera above it: the view ray (unit,
+// from the camera), the normal (unit, up) and the view refracted into the
+// water (the zero vector past the critical angle). Every shader of the
+// surface seen from above starts here, so the forward and the deferred
+// shading work from the same bits.
+struct ViewFromAbove {
+  vec3 view, normal, refracted;
+};
+
+TP_INLINE ViewFromAbove viewFromAbove(WaterSurfaceParams s, vec3 camera, vec3 position, vec3 normal) {
+  ViewFromAbove v;
+  v.view = normalize(position - camera);
+  v.normal = normalize(normal);
+  v.refracted = refract(v.view, v.normal, 1.0f / s.extinction.w);
+  return v;
 }
 
 // Where world xz falls on the surface mesh (vertex (i, j) at cell centre

@@ -29,9 +29,12 @@ FragmentNeeds unshadowedNeeds(FragmentNeeds surfaces) {
 Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs)
     : params_(groundParams(scene)),
       pipeline_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), groundNeeds(needs)))),
-      unshadowed_(gpu::createGraphicsPipeline(
-          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), unshadowedNeeds(needs)))) {}
+          ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), groundNeeds(needs)))) {
+  if (needs.sphereShadows || needs.boxShadows) {
+    unshadowed_.emplace(gpu::createGraphicsPipeline(
+        ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), unshadowedNeeds(needs))));
+  }
+}
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                      std::function<bool()> outOfObjectShadows) const {
@@ -39,7 +42,7 @@ void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fra
     attachSurfaces(pass, targets, true);
     Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
     return [this, targets, &set, outOfObjectShadows](PassContext& pc) {
-      const gpu::Pipeline& pipeline = outOfObjectShadows() ? unshadowed_ : pipeline_;
+      const gpu::Pipeline& pipeline = unshadowed_ && outOfObjectShadows() ? *unshadowed_ : pipeline_;
       drawSurfaces(pc.cmd, targets, true, [&] {
         gpu::bindPipeline(pc.cmd, pipeline, params_);
         set.bind(pc.cmd, pipeline, pc.descriptors);

@@ -2,6 +2,7 @@
 // The checkered ground plane around the pool's hole, depth tested; the first
 // surface, so it clears depth and the G-buffer.
 #include <functional>
+#include <optional>
 
 #include "render/surfaces.hpp"
 #include "scene/scene.hpp"
@@ -24,7 +25,8 @@ class Ground {
  private:
   shader::GroundParams params_;
   gpu::Pipeline pipeline_;
-  gpu::Pipeline unshadowed_;  // without the spheres' and boxes' shadows
+  // Without the spheres' and boxes' shadows; none when the scene's ground has none to leave out.
+  std::optional<gpu::Pipeline> unshadowed_;
 };
 
 }  // namespace tp::render

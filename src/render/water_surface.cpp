@@ -37,10 +37,7 @@ FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
 
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
                            FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred)
-    : above_(gpu::createGraphicsPipeline(
-          ctx, waterSide(apparentRefraction(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
-                         vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces)))),
-      below_(gpu::createGraphicsPipeline(
+    : below_(gpu::createGraphicsPipeline(
           ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
@@ -58,6 +55,11 @@ WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const sce
     underwaterRef_ = graph.image("underwater", underwater_);
   } else if (deferred) {
     deferred_.emplace(ctx, graph, frame, waterNeeds(scene, surfaces));
+  }
+  if (!deferred_) {
+    above_.emplace(gpu::createGraphicsPipeline(
+        ctx, waterSide(apparentRefraction(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
+                       vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces))));
   }
 }
 
@@ -98,8 +100,7 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
         .constantStorageBuffer(8, *pool.floorVertices);
     return [this, &color, &depth, &set](PassContext& pc) {
       drawOver(pc.cmd, color, depth, [&] {
-        const std::vector<const gpu::Pipeline*> sides =
-            deferred_ ? std::vector{&below_} : std::vector{&above_, &below_};
+        const std::vector<const gpu::Pipeline*> sides = above_ ? std::vector{&*above_, &below_} : std::vector{&below_};
         for (const gpu::Pipeline* side : sides) {
           gpu::bindPipeline(pc.cmd, *side, draw_.params);
           set.bind(pc.cmd, *side, pc.descriptors);

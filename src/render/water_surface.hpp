@@ -31,7 +31,8 @@ class WaterSurface {
  private:
   gpu::Buffer indices_;
   WaterDraw draw_;
-  gpu::Pipeline above_, below_;
+  gpu::Pipeline below_;
+  std::optional<gpu::Pipeline> above_;  // forward; none when the side from above is shaded deferred
   gpu::Image underwater_;
   std::optional<GraphImage> underwaterRef_;  // the apparent-depth mode's
   std::optional<WaterDeferred> deferred_;
