@@ -51,6 +51,20 @@ foreach(water water_surface.frag water_surface_deferred.comp water_surface_appar
     ${water}:TP_SCATTERING+TP_GLASS:${name}.scattering.glass.${stage}
     ${water}:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${name}.no_shadows.scattering.glass.${stage})
 endforeach()
+# The water's passes that write zero into the G-buffer's ambient image where
+# the water is seen, for frames whose resolve pass takes AO after the water
+# (render/frame_resolve.hpp); never with glass, whose frames apply AO before it.
+foreach(water water_surface_deferred.comp water_surface_below.frag)
+  string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
+  string(REGEX MATCH "[a-z]+$" stage ${water})
+  list(APPEND TIDEPOOL_SHADER_VARIANTS
+    ${water}:TP_CLEAR_AMBIENT:${name}.clear_ambient.${stage}
+    ${water}:TP_NO_SHADOWS+TP_CLEAR_AMBIENT:${name}.no_shadows.clear_ambient.${stage}
+    ${water}:TP_SCATTERING+TP_CLEAR_AMBIENT:${name}.scattering.clear_ambient.${stage}
+    ${water}:TP_NO_SHADOWS+TP_SCATTERING+TP_CLEAR_AMBIENT:${name}.no_shadows.scattering.clear_ambient.${stage})
+endforeach()
+# The resolve pass with the AO taken in it, at full and at half resolution.
+list(APPEND TIDEPOOL_SHADER_VARIANTS resolve.comp:TP_AO:resolve.ao.comp resolve.comp:TP_AO+TP_AO_UPSAMPLE:resolve.ao_upsample.comp)
 
 # The AO's apply pass that upsamples half-resolution AO as it applies it.
 list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)

@@ -15,6 +15,7 @@ layout(binding = 1, rgba16f) uniform readonly image2D ambientImage;
 layout(binding = 2, r32f) uniform readonly image2D lowAo;
 layout(binding = 3) uniform Frame { FrameUniforms frame; };
 layout(binding = 4) uniform sampler2D depthTexture;
+layout(binding = 5, r32f) uniform readonly image2D lowViewDepth;
 layout(push_constant) uniform Push { AoUpsampleParams params; };
 #include "lib/ao_upsample.glsl"
 float aoAt(ivec2 p) { return upsampledAo(p); }
@@ -29,5 +30,5 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(params.size.xy)))) return;
   const vec4 color = imageLoad(colorImage, p);
   const vec3 ambient = imageLoad(ambientImage, p).rgb;
-  imageStore(colorImage, p, vec4(color.rgb - ambient * (1.0 - aoAt(p)), color.a));
+  imageStore(colorImage, p, vec4(withAo(color.rgb, ambient, aoAt(p)), color.a));
 }

@@ -8,18 +8,15 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 1) uniform sampler2D depthTexture;
+layout(binding = 1, r32f) uniform readonly image2D viewDepthImage;  // the SSAO pass's aoViewDepth
 layout(binding = 2, r32f) uniform readonly image2D source;
 layout(binding = 3, r32f) uniform writeonly image2D target;
 layout(push_constant) uniform Push { AoBlurParams params; };
 
-// Distance in front of the camera of AO pixel q's surface: for a perspective
-// projection it does not depend on the pixel's x and y.
-float viewDepth(ivec2 q) {
-  return -viewPositionFromDepth(frame.inverseProjection, vec2(0.5), texelFetch(depthTexture, q * int(params.config.w), 0).r).z;
-}
+// Distance in front of the camera of AO pixel q's surface.
+float viewDepth(ivec2 q) { return abs(imageLoad(viewDepthImage, q).r); }
 
-bool hasSurface(ivec2 q) { return texelFetch(depthTexture, q * int(params.config.w), 0).r < 1.0; }
+bool hasSurface(ivec2 q) { return imageLoad(viewDepthImage, q).r > 0.0; }
 
 void main() {
   const ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -11,6 +11,7 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2D depthTexture;
 layout(binding = 2, r32f) uniform readonly image2D lowAo;
 layout(binding = 3, r32f) uniform writeonly image2D target;
+layout(binding = 4, r32f) uniform readonly image2D lowViewDepth;
 layout(push_constant) uniform Push { AoUpsampleParams params; };
 #include "lib/ao_upsample.glsl"
 

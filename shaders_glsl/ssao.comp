@@ -15,6 +15,7 @@ layout(binding = 1) uniform sampler2D depthTexture;
 layout(binding = 2, rgba16f) uniform readonly image2D normalImage;
 layout(binding = 3) uniform Kernel { SsaoKernel kernel; };
 layout(binding = 4, r32f) uniform writeonly image2D aoImage;
+layout(binding = 5, r32f) uniform writeonly image2D viewDepthImage;  // aoViewDepth, for the passes after
 layout(push_constant) uniform Push { SsaoParams params; };
 
 vec3 viewPositionAt(ivec2 q, vec2 frameSize) {
@@ -46,7 +47,9 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(params.size.xy)))) return;
   const ivec2 d = p * int(params.config.z);  // the frame pixel this AO pixel stands for
   const vec2 frameSize = vec2(params.size.zw);
-  if (texelFetch(depthTexture, d, 0).r >= 1.0) {  // no surface: nothing to occlude
+  const float depth = texelFetch(depthTexture, d, 0).r;
+  imageStore(viewDepthImage, p, vec4(aoViewDepth(frame.inverseProjection, depth)));
+  if (depth >= 1.0) {  // no surface: nothing to occlude
     imageStore(aoImage, p, vec4(1.0));
     return;
   }

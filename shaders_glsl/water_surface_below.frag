@@ -6,6 +6,15 @@
 // sides of a branch, and the cast below the surface is the costliest code here.
 #include "lib/water_shading.glsl"
 
+#ifdef TP_CLEAR_AMBIENT
+// The opaque surfaces' ambient part, which the resolve pass takes AO from:
+// none where the water is seen.
+layout(location = 1) out vec4 ambient;
+#endif
+
 void main() {
   color = shadeFromBelow(normalize(worldPosition - frame.cameraPosition.xyz), normalize(worldNormal));
+#ifdef TP_CLEAR_AMBIENT
+  ambient = vec4(0.0);
+#endif
 }

@@ -17,6 +17,11 @@ layout(binding = 12, rgba32f) uniform readonly image2D gbuffer2;
 layout(binding = 13, rgba32f) uniform readonly image2D gbuffer3;
 layout(binding = 14, rgba32f) uniform readonly image2D gbuffer4;
 layout(binding = 15) readonly buffer TileList { uint tileList[]; };  // water_shading_tiles.comp's
+#ifdef TP_CLEAR_AMBIENT
+// The opaque surfaces' ambient part, which the resolve pass takes AO from:
+// none where the water is seen.
+layout(binding = 16, rgba16f) uniform writeonly image2D ambientImage;
+#endif
 
 void main() {
   const uint tile = tileList[TP_WATER_SHADING_LIST_HEADER + gl_WorkGroupID.x];
@@ -33,4 +38,7 @@ void main() {
   const WaterSample s = unpackWaterSample(g);
   const ViewFromAbove v = viewFromAbove(surface, frame.cameraPosition.xyz, s.position, s.normal);
   imageStore(colorImage, p, vec4(seenFromAbove(s.position, v, s.rd), 1.0));
+#ifdef TP_CLEAR_AMBIENT
+  imageStore(ambientImage, p, vec4(0.0));
+#endif
 }

@@ -1,4 +1,4 @@
-// Aerial perspective (shared/haze.h, haze.comp): the GPU pass against the
+// Aerial perspective (shared/haze.h, resolve.comp): the GPU pass against the
 // shared function applied on the CPU to the frame without it, the raster
 // against the reference, and the closed form of the transmittance.
 #include <gtest/gtest.h>
@@ -60,8 +60,8 @@ TEST_F(HazeTest, GpuPassAppliesTheSharedFunction) {
   render::Renderer hazy(ctx(), s, kWidth, kHeight), plain(ctx(), clear, kWidth, kHeight, {.aovs = true});
   const auto withHaze = hazy.render({.frame = 0, .hdr = true});
   const auto without = plain.render({.frame = 0, .hdr = true, .aovs = true});
-  ASSERT_NE(render::findPass(withHaze.passes, render::passes::kHaze), nullptr);
-  EXPECT_EQ(render::findPass(without.passes, render::passes::kHaze), nullptr);
+  ASSERT_NE(render::findPass(withHaze.passes, render::passes::kResolve), nullptr);
+  EXPECT_EQ(render::findPass(without.passes, render::passes::kResolve), nullptr);
   const shader::SkyParams sky = render::skyParams(s.sky);
   const glm::vec3 eye = s.camera.position;
   const glm::mat4 ndcToWorld = glm::inverse(without.worldToNDC);

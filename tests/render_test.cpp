@@ -195,10 +195,11 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   // caustics) ran on the first; the camera is away from the water (no camera
   // medium). The sky's background after the opaque surfaces, where they left
   // the far plane. The water deferred: its G-buffer, tiles, shading and the
-  // side seen from below.
-  const std::vector<std::string> opaque{"ground",    "pool",        "objects",  "background",     "ssao",
-                                        "ao blur x", "ao blur y",   "ao apply", "water g-buffer", "water tiles",
-                                        "water",     "water below", "haze"};
+  // side seen from below. The AO, the haze and the tonemap in the resolve,
+  // which runs for either image.
+  const std::vector<std::string> opaque{"ground",      "pool",      "objects",     "background",
+                                        "ssao",        "ao blur x", "ao blur y",   "water g-buffer",
+                                        "water tiles", "water",     "water below", "resolve"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
     all.insert(all.end(), tail.begin(), tail.end());
@@ -211,30 +212,29 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   EXPECT_EQ(names(hdrOnly), first);
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
-  EXPECT_EQ(names(both), with({"tonemap", "readback hdr", "readback ldr"}));
+  EXPECT_EQ(names(both), with({"readback hdr", "readback ldr"}));
   auto ldrOnly = renderer.render({.hdr = false, .ldr = true});
-  EXPECT_EQ(names(ldrOnly), with({"tonemap", "readback ldr"}));
+  EXPECT_EQ(names(ldrOnly), with({"readback ldr"}));
   EXPECT_EQ(both.srgb, ldrOnly.srgb);
   EXPECT_EQ(both.rgba, hdrOnly.rgba);
   for (const auto& p : both.passes) EXPECT_GE(p.milliseconds, 0.0) << p.name;
 
   // A scene without water pays for none: no simulation, no water pass; one
   // without AO, for no SSAO passes; AO at half resolution without a blur:
-  // SSAO, then the apply, which upsamples (the upsampled image only for a
-  // request of the AO).
+  // SSAO, then the resolve, which upsamples as it applies (the upsampled
+  // image only for a request of the AO).
   scene::Scene dry = scene::defaultScene();
   dry.water.enabled = false;
   dry.ao.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "ground", "objects", "background", "haze", "readback hdr"}));
+            (std::vector<std::string>{"sky", "ground", "objects", "background", "resolve", "readback hdr"}));
   dry.ao = scene::Ao{};
   dry.ao.resolution = "half";
   dry.ao.blur = "off";
   render::Renderer halfRenderer(ctx(), dry, 64, 48);
-  EXPECT_EQ(
-      names(halfRenderer.render({.hdr = true})),
-      (std::vector<std::string>{"sky", "ground", "objects", "background", "ssao", "ao apply", "haze", "readback hdr"}));
+  EXPECT_EQ(names(halfRenderer.render({.hdr = true})),
+            (std::vector<std::string>{"sky", "ground", "objects", "background", "ssao", "resolve", "readback hdr"}));
   const auto withAo = halfRenderer.render({.hdr = true, .ao = true});
   EXPECT_NE(render::findPass(withAo.passes, render::passes::kAoUpsample), nullptr);
 }

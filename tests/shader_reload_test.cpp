@@ -61,13 +61,15 @@ TEST_F(ShaderReloadTest, ReloadedShaderReachesThePipelinesAndABrokenOneKeepsTheO
   EXPECT_TRUE(gpu::reloadShaders(shaders).changed.empty()) << "the sources as built";
 
   // Half the exposure in the shader, against half the exposure in the scene.
-  std::string tonemap = readText((shaders / "tonemap.comp").string());
-  const std::string exposure = "params.exposure)";
-  ASSERT_NE(tonemap.find(exposure), std::string::npos);
-  tonemap.replace(tonemap.find(exposure), exposure.size(), "0.5 * params.exposure)");
-  writeText((shaders / "tonemap.comp").string(), tonemap);
+  // The resolve pass's source builds three modules (cmake/shaders.cmake).
+  const std::vector<std::string> modules{"resolve.ao.comp.spv", "resolve.ao_upsample.comp.spv", "resolve.comp.spv"};
+  std::string resolve = readText((shaders / "resolve.comp").string());
+  const std::string exposure = "params.look.y)";
+  ASSERT_NE(resolve.find(exposure), std::string::npos);
+  resolve.replace(resolve.find(exposure), exposure.size(), "0.5 * params.look.y)");
+  writeText((shaders / "resolve.comp").string(), resolve);
   gpu::ShaderReload reload = gpu::reloadShaders(shaders);
-  EXPECT_EQ(reload.changed, std::vector<std::string>{"tonemap.comp.spv"});
+  EXPECT_EQ(reload.changed, modules);
   EXPECT_TRUE(reload.errors.empty());
   render::Renderer reloaded(render::GoOnFrom{renderer});
   const auto darker = reloaded.render({.frame = 2, .ldr = true});
@@ -76,12 +78,14 @@ TEST_F(ShaderReloadTest, ReloadedShaderReachesThePipelinesAndABrokenOneKeepsTheO
   EXPECT_FALSE(darker.srgb == renderer.render({.frame = 2, .ldr = true}).srgb);
 
   // A broken shader: its errors, and the code it had (the halved exposure) stays.
-  writeText((shaders / "tonemap.comp").string(), "#version 450\nvoid main() { broken }\n");
+  writeText((shaders / "resolve.comp").string(), "#version 450\nvoid main() { broken }\n");
   reload = gpu::reloadShaders(shaders);
   EXPECT_TRUE(reload.changed.empty());
-  ASSERT_EQ(reload.errors.size(), 1u);
-  EXPECT_EQ(reload.errors[0].rfind("tonemap.comp.spv: ", 0), 0u) << reload.errors[0];
-  EXPECT_NE(reload.errors[0].find("tonemap.comp:2"), std::string::npos) << reload.errors[0];
+  ASSERT_EQ(reload.errors.size(), modules.size());
+  for (size_t k = 0; k < modules.size(); ++k) {
+    EXPECT_EQ(reload.errors[k].rfind(modules[k] + ": ", 0), 0u) << reload.errors[k];
+    EXPECT_NE(reload.errors[k].find("resolve.comp:2"), std::string::npos) << reload.errors[k];
+  }
   render::Renderer kept(render::GoOnFrom{reloaded});
   EXPECT_TRUE(kept.render({.frame = 2, .ldr = true}).srgb == darker.srgb);
 }

@@ -182,10 +182,11 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header, "width,height,pass,wall_ms,gpu_ms,runs,frame_wall_ms,fps,frames,device") << table.header;
   // The default scene's frame after the first, pass by pass: simulate,
-  // caustics, background, ground, pool, objects, four AO passes (balanced:
-  // no upsample), the water's four (deferred: G-buffer, tiles, shading, the
-  // side from below), haze and the HDR readback; at each of the two sizes.
-  EXPECT_EQ(table.rows, 2 * 16);
+  // caustics, background, ground, pool, objects, three AO passes (SSAO and
+  // the blurs), the water's four (deferred: G-buffer, tiles, shading, the
+  // side from below), the resolve (the AO applied, the haze) and the HDR
+  // readback; at each of the two sizes.
+  EXPECT_EQ(table.rows, 2 * 15);
   for (const char* pass : {"water", "simulate", "ssao", "readback hdr"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }

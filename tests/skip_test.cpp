@@ -91,7 +91,10 @@ using SkipTest = GpuTest;
 TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
   ScratchDir dir;
   const std::vector<Variant> variants{
-      {"everything on", [](scene::Scene&, const std::string&) {}, {&render::passes::kCameraMedium}, {}},
+      {"everything on",
+       [](scene::Scene&, const std::string&) {},
+       {&render::passes::kCameraMedium, &render::passes::kAoApply},
+       {}},
       {"no water",
        [](scene::Scene& s, const std::string&) { s.water.enabled = false; },
        {&render::passes::kSimulate, &render::passes::kWater, &render::passes::kCaustics, &render::passes::kCameraMedium,
@@ -177,6 +180,16 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
        },
        {},
        {}},
+      // Skipping takes the AO after the water, which clears the ambient part
+      // where it is seen, from below too; with nothing skipped the AO is
+      // applied before the water.
+      {"camera under the water",
+       [](scene::Scene& s, const std::string&) {
+         s.camera.position = {-1.4f, -0.75f, 1.5f};
+         s.camera.target = {0.9f, -0.2f, -0.7f};
+       },
+       {&render::passes::kAoApply},
+       {}},
   };
   for (const Variant& v : variants) {
     SCOPED_TRACE(v.name);
@@ -188,9 +201,10 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
     for (size_t i = 0; i < std::size(sequence); ++i) {
       const uint32_t frame = sequence[i];
       SCOPED_TRACE("frame " + std::to_string(frame) + " (" + std::to_string(i) + ")");
-      const auto a = skipping.render({.frame = frame});
-      const auto b = everything.render({.frame = frame});
+      const auto a = skipping.render({.frame = frame, .ldr = true});
+      const auto b = everything.render({.frame = frame, .ldr = true});
       EXPECT_EQ(differingPixels(a, b), 0u);
+      EXPECT_TRUE(a.srgb == b.srgb);
       for (const auto* pass : v.neverPasses) EXPECT_FALSE(recorded(a, *pass)) << pass->name;
       for (const auto& resource : v.neverResources) EXPECT_FALSE(anyPassUses(a, resource)) << resource;
       const OutsideWater oa = outsideWater(a), ob = outsideWater(b);

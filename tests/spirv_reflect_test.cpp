@@ -18,12 +18,17 @@ TEST(SpirvReflect, ComputeBindingsPushConstantsAndLocalSize) {
 }
 
 TEST(SpirvReflect, ImagesSamplersAndUniforms) {
-  auto tonemap = gpu::reflectSpirv(gpu::spirvModule("tonemap.comp.spv"));
-  ASSERT_EQ(tonemap.bindings.size(), 2u);
-  EXPECT_EQ(tonemap.bindings[0].type, vk::DescriptorType::eStorageImage);
-  EXPECT_EQ(tonemap.bindings[1].type, vk::DescriptorType::eStorageImage);
-  EXPECT_EQ(tonemap.localSize[0], 8u);
-  EXPECT_EQ(tonemap.localSize[1], 8u);
+  auto resolve = gpu::reflectSpirv(gpu::spirvModule("resolve.comp.spv"));
+  ASSERT_EQ(resolve.bindings.size(), 6u);
+  EXPECT_EQ(resolve.bindings[0].type, vk::DescriptorType::eStorageImage);
+  EXPECT_EQ(resolve.bindings[1].type, vk::DescriptorType::eStorageImage);
+  EXPECT_EQ(resolve.bindings[2].type, vk::DescriptorType::eUniformBuffer);
+  EXPECT_EQ(resolve.bindings[3].type, vk::DescriptorType::eCombinedImageSampler);
+  EXPECT_EQ(resolve.bindings[4].type, vk::DescriptorType::eCombinedImageSampler);
+  EXPECT_EQ(resolve.bindings[5].type, vk::DescriptorType::eUniformBuffer);
+  EXPECT_TRUE(resolve.pushConstants);
+  EXPECT_EQ(resolve.localSize[0], 8u);
+  EXPECT_EQ(resolve.localSize[1], 8u);
 
   auto background = gpu::reflectSpirv(gpu::spirvModule("sky_background.frag.spv"));
   EXPECT_EQ(background.stage, vk::ShaderStageFlagBits::eFragment);
@@ -36,7 +41,7 @@ TEST(SpirvReflect, ImagesSamplersAndUniforms) {
 TEST(SpirvReflect, RejectsWhatIsNotSpirv) {
   std::vector<uint32_t> junk{1, 2, 3, 4, 5, 6};
   EXPECT_THROW(gpu::reflectSpirv(junk), std::runtime_error);
-  auto code = gpu::spirvModule("tonemap.comp.spv");
+  auto code = gpu::spirvModule("resolve.comp.spv");
   std::vector<uint32_t> truncated(code.begin(), code.end());
   truncated.push_back(0xffff0000u | 71u);  // a last instruction claiming more words than remain
   EXPECT_THROW(gpu::reflectSpirv(truncated), std::runtime_error);

@@ -261,9 +261,10 @@ TEST_F(ViewTest, PauseHoldsTheFrameNumberWhileTheCameraMoves) {
 }
 
 // The reload key, scripted: shaders compiled again from a copy of the
-// sources whose tonemap halves the exposure reach the frame (it equals the
-// frame of the scene with half the exposure), the water going on; a copy with
-// a broken tonemap prints glslang's error and keeps the built code (the
+// sources whose resolve pass halves the exposure reach the frame (it equals
+// the frame of the scene with half the exposure), the water going on; a copy
+// with a broken resolve pass prints glslang's errors (one for each of the
+// three modules its source builds) and keeps the built code (the
 // frame `render` makes). Validation stays silent through the pipelines made again.
 TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   ScratchDir dir;
@@ -272,12 +273,12 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
     std::filesystem::copy(std::filesystem::path(TIDEPOOL_SOURCE_DIR) / "shaders_glsl", copy,
                           std::filesystem::copy_options::recursive);
   }
-  std::string tonemap = readText((halved / "tonemap.comp").string());
-  const std::string exposure = "params.exposure)";
-  ASSERT_NE(tonemap.find(exposure), std::string::npos);
-  writeText((halved / "tonemap.comp").string(),
-            tonemap.replace(tonemap.find(exposure), exposure.size(), "0.5 * params.exposure)"));
-  writeText((broken / "tonemap.comp").string(), "#version 450\nvoid main() { broken }\n");
+  std::string resolve = readText((halved / "resolve.comp").string());
+  const std::string exposure = "params.look.y)";
+  ASSERT_NE(resolve.find(exposure), std::string::npos);
+  writeText((halved / "resolve.comp").string(),
+            resolve.replace(resolve.find(exposure), exposure.size(), "0.5 * params.look.y)"));
+  writeText((broken / "resolve.comp").string(), "#version 450\nvoid main() { broken }\n");
 
   const scene::Scene scene = scene::defaultScene();
   scene::Scene half = scene;
@@ -291,17 +292,20 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   ProcessResult r = runViewer(
       "--size 160x90 --frames 9 --shader-dir '" + halved.string() + "' --script 4:reload --screenshot " + shot, dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
-  EXPECT_NE(r.out.find("shader reload: 1 changed, 0 failed\n  tonemap.comp.spv\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shader reload: 3 changed, 0 failed\n  resolve.ao.comp.spv\n  resolve.ao_upsample.comp.spv\n"
+                       "  resolve.comp.spv\n"),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(differingPixels(pngBytes(shot), frame8(half)), 0u);
 
   const std::string kept = dir.file("kept.png");
   r = runViewer(
       "--size 160x90 --frames 9 --shader-dir '" + broken.string() + "' --script 4:reload --screenshot " + kept, dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("shader reload: tonemap.comp.spv: "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("tonemap.comp:2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("shader reload: resolve.comp.spv: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("resolve.comp:2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors\n"), std::string::npos) << r.err;
-  EXPECT_NE(r.out.find("shader reload: 0 changed, 1 failed\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shader reload: 0 changed, 3 failed\n"), std::string::npos) << r.out;
   const std::vector<uint8_t> built = frame8(scene);
   EXPECT_EQ(differingPixels(pngBytes(kept), built), 0u);
   EXPECT_GT(differingPixels(built, frame8(half)), size_t(kWidth) * kHeight / 2);  // the halving shows

@@ -4,8 +4,10 @@
 // AO does not leak across silhouettes; where none does, the nearest in depth.
 // Where no surface is, 1. For ao_upsample.comp and for ao_apply.comp's
 // variant that upsamples as it applies (one pass less over the frame); the
-// includer declares `frame`, `depthTexture`, `lowAo` and `params`
-// (AoUpsampleParams).
+// includer declares `frame`, `depthTexture` (the frame's), `lowAo`,
+// `lowViewDepth` (the SSAO pass's aoViewDepth) and `params`
+// (AoUpsampleParams). The AO pixels' depths are those the SSAO pass saw, so
+// the upsample may run after the water has drawn over the depth buffer.
 #ifndef TP_LIB_AO_UPSAMPLE
 #define TP_LIB_AO_UPSAMPLE
 #include "shared/ssao.h"
@@ -28,7 +30,7 @@ float upsampledAo(ivec2 f) {
     const ivec2 o = ivec2(k & 1, k >> 1);
     const ivec2 q = min(q0 + o, lowSize - 1);
     const float bilinear = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-    const float gap = abs(viewDepthAt(q * factor) - depth);
+    const float gap = abs(abs(imageLoad(lowViewDepth, q).r) - depth);
     const float ao = imageLoad(lowAo, q).r;
     if (gap < nearestGap) {
       nearestGap = gap;

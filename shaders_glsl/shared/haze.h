@@ -3,18 +3,12 @@
 // distance D, a surface s metres away keeps exp(-s / D) of its light and
 // the rest is the sky's at the horizon below the view (along the view's
 // azimuth): far surfaces fade into the horizon, and the ground meets the sky
-// without an edge. Shared by haze.comp and the reference tracer.
+// without an edge. Shared by resolve.comp and the reference tracer.
 #ifndef TP_SHARED_HAZE_H
 #define TP_SHARED_HAZE_H
 #include "shared/interop.h"
 
 TP_BEGIN
-
-// Push constants of haze.comp.
-struct HazeParams {
-  uvec4 size;  // xy: the frame's size in pixels
-  vec4 haze;   // x: the haze distance D in metres (> 0)
-};
 
 // The share of a surface's light that crosses `distance` metres of air.
 TP_INLINE float hazeTransmittance(float distance, float hazeDistance) { return exp(-distance / hazeDistance); }
@@ -33,9 +27,5 @@ TP_INLINE vec3 hazed(vec3 radiance, vec3 horizon, float distance, float hazeDist
 }
 
 TP_END
-
-#ifdef __cplusplus
-static_assert(sizeof(tp::shader::HazeParams) == 32);
-#endif
 
 #endif

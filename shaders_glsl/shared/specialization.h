@@ -14,6 +14,10 @@
 #define TP_SPEC_GLOSSY 102          // a surface has a glossy lobe (lib/glossy_lookup.glsl)
 #define TP_SPEC_BRICK_WALLS 103     // the pool's walls are brick (shared/pool.h)
 #define TP_SPEC_TILES 104           // a plane is tiled or paved (shared/surface_pattern.h)
+// The resolve pass's (resolve.comp, render/frame_resolve.cpp).
+#define TP_SPEC_HAZE 110       // the scene has haze (shared/haze.h)
+#define TP_SPEC_STORE_HDR 111  // the frame's HDR colour is read back: store what the pass made of it
+#define TP_SPEC_WRITE_LDR 112  // the frame's 8-bit image is shown or read back: tonemap into it
 
 #ifdef __cplusplus
 TP_BEGIN

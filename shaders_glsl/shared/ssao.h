@@ -26,7 +26,7 @@ struct SsaoParams {
 
 // One direction of the separable blur: taps at offsets first .. first + taps - 1.
 struct AoBlurParams {
-  uvec4 config;  // x: 0 horizontal, 1 vertical; y: taps; z: 1 bilateral (depth-aware), 0 box; w: factor
+  uvec4 config;  // x: 0 horizontal, 1 vertical; y: taps; z: 1 bilateral (depth-aware), 0 box; w unused
   ivec4 window;  // x: offset of the first tap (pixels); yzw unused
   uvec4 size;    // xy: AO image size
   vec4 shape;    // x: depth tolerance of the bilateral weight, relative to the pixel's view depth
@@ -50,6 +50,21 @@ struct AoApplyParams {
 TP_INLINE vec3 viewPositionFromDepth(mat4 inverseProjection, vec2 uv, float depth) {
   const vec4 p = inverseProjection * vec4(uv.x * 2.0f - 1.0f, uv.y * 2.0f - 1.0f, depth, 1.0f);
   return vec3(p.x, p.y, p.z) / p.w;
+}
+
+// A pixel's colour with the AO taken from its ambient part: the surfaces'
+// passes drew direct light plus ambient (the sky's irradiance) and kept the
+// ambient part apart; AO scales only that part.
+TP_INLINE vec3 withAo(vec3 color, vec3 ambient, float ao) { return color - ambient * (1.0f - ao); }
+
+// What the SSAO pass stores of each AO pixel's surface for the passes after
+// it (the blur, the upsample): its distance in front of the camera, which
+// for a perspective projection does not depend on the pixel's x and y; and
+// where no surface is (depth 1), the far plane's distance negated. One
+// image read then stands for a depth fetch and a reconstruction.
+TP_INLINE float aoViewDepth(mat4 inverseProjection, float depth) {
+  const float d = -viewPositionFromDepth(inverseProjection, vec2(0.5f), depth).z;
+  return depth < 1.0f ? d : -d;
 }
 
 TP_END

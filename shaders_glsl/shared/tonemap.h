@@ -1,17 +1,11 @@
-// The tonemap pass's push constants and its curve (HDR linear to an 8-bit
-// sRGB preview), shared with C++ to tonemap CPU images (the reference) and to
-// measure error on the image a viewer sees.
+// The tonemap's curve (HDR linear to an 8-bit sRGB preview), shared with
+// C++ to tonemap CPU images (the reference) and to measure error on the
+// image a viewer sees.
 #ifndef TP_SHARED_TONEMAP_H
 #define TP_SHARED_TONEMAP_H
 #include "shared/interop.h"
 
 TP_BEGIN
-
-struct TonemapParams {
-  uvec2 size;      // image width, height
-  float exposure;  // linear scale applied before the curve
-  float pad;
-};
 
 // The ACES filmic fit of Narkowicz (2015).
 TP_INLINE vec3 acesFilmic(vec3 x) {
@@ -29,9 +23,5 @@ TP_INLINE vec3 srgbEncode(vec3 linear) {
 TP_INLINE vec3 tonemap(vec3 hdr, float exposure) { return srgbEncode(acesFilmic(hdr * exposure)); }
 
 TP_END
-
-#ifdef __cplusplus
-static_assert(sizeof(tp::shader::TonemapParams) == 16);
-#endif
 
 #endif

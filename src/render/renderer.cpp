@@ -14,17 +14,16 @@
 #include "render/ambient_occlusion.hpp"
 #include "render/aovs.hpp"
 #include "render/camera_medium.hpp"
+#include "render/frame_resolve.hpp"
 #include "render/frame_targets.hpp"
 #include "render/glass.hpp"
 #include "render/glossy_environment.hpp"
 #include "render/ground.hpp"
-#include "render/haze.hpp"
 #include "render/morphological_aa.hpp"
 #include "render/objects.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/pool.hpp"
 #include "render/sky.hpp"
-#include "render/tonemap.hpp"
 #include "render/water_surface.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/frustum.hpp"
@@ -34,6 +33,19 @@
 #include "sim/water_driver.hpp"
 
 namespace tp::render {
+namespace {
+
+// Whether the resolve pass takes the AO, after the water, rather than a pass
+// of its own before it: one pass less over the frame. Only with the water
+// shaded deferred (or none), which then clears the ambient part where it is
+// seen; not in the apparent-depth mode, whose copy of the pool has the AO,
+// nor with glass, drawn forward after the AO; and not with nothing skipped,
+// whose frame, AO applied before the water, the tests compare with.
+bool aoAfterWater(const scene::Scene& scene, bool skipping) {
+  return scene.ao.enabled && skipping && !apparentRefraction(scene) && !scene::hasGlass(scene);
+}
+
+}  // namespace
 
 // The renderer's features, each with its images and pipelines, in the order
 // their passes record. `live` is the renderer's own scene, which setCamera()
@@ -58,8 +70,7 @@ struct Renderer::Resources {
         sky(ctx, graph, scene),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
-        ground(ctx, scene, needs),
-        tonemap(ctx) {
+        ground(ctx, scene, needs) {
     graph.setCaching(skipping);
     const FrameInputs in{uniformsRef,        sky.image(),       glossy.image(), medium.buffer(),
                          *samplers.equirect, *samplers.nearest, *samplers.clamp};
@@ -87,9 +98,9 @@ struct Renderer::Resources {
     // The sky where no opaque surface is (their depth test leaves the rest out).
     sky.declareBackground(graph, surfaces, in);
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
-    // copy of the pool then has it too.
+    // copy of the pool then has it too. Applied here, or by the resolve.
     if (scene.ao.enabled) {
-      ao.emplace(ctx, graph, scene.ao, frame);
+      ao.emplace(ctx, graph, scene.ao, frame, aoAfterWater(scene, skipping));
       ao->declare(graph, surfaces, in);
     }
     if (waterSurface) waterSurface->declareUnderwater(graph, surfaces.color);
@@ -102,11 +113,11 @@ struct Renderer::Resources {
       glass->declare(graph, surfaces, in, glassInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
-    // The air between the camera and every surface, the water's too.
-    if (scene.sky.hazeDistance > 0.0f) {
-      haze.emplace(ctx);
-      haze->declare(graph, surfaces, in, scene.sky.hazeDistance);
-    }
+    // The AO when it is taken after the water, the air between the camera
+    // and every surface (the water's too), the tonemap.
+    std::optional<AoForResolve> aoInResolve;
+    if (ao && aoAfterWater(scene, skipping)) aoInResolve = ao->forResolve(surfaces);
+    resolve.emplace(ctx, scene, aoInResolve);
     if (options.aovs) {
       aovs.emplace(ctx, graph, frame, pool.has_value());
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
@@ -116,10 +127,10 @@ struct Renderer::Resources {
     // LDR target, which the viewer shows and the PNG is read from.
     if (scene.render.antialiasing == "morphological") {
       antialiasing.emplace(ctx, graph, frame);
-      tonemap.declare(graph, surfaces.color, antialiasing->input(), scene.render.exposure);
+      resolve->declare(graph, surfaces, in, antialiasing->input());
       antialiasing->declare(graph, targets.ldr(), surfaces.depth, *samplers.clamp, *samplers.nearest);
     } else {
-      tonemap.declare(graph, surfaces.color, targets.ldr(), scene.render.exposure);
+      resolve->declare(graph, surfaces, in, targets.ldr());
     }
     targets.declareReadbacks(graph);
   }
@@ -128,7 +139,7 @@ struct Renderer::Resources {
   // the camera's medium, the pool and its caustics.
   void declareWater(const gpu::Context& ctx, const scene::Scene& scene, vk::Extent2D frame, const FrameInputs& in) {
     water.emplace(ctx, scene, skipping);
-    waterSurface.emplace(ctx, graph, scene, needs, water->stepper(), frame, skipping);
+    waterSurface.emplace(ctx, graph, scene, needs, water->stepper(), frame, skipping, aoAfterWater(scene, skipping));
     const WaterDraw& draw = waterSurface->draw();
     // The live drops and moves, the steps to this frame with the scene's
     // drops due on the way, and the stats that say whether the water is
@@ -225,7 +236,6 @@ struct Renderer::Resources {
   GlossyEnvironment glossy;
   CameraMedium medium;
   Ground ground;
-  Tonemap tonemap;
   // With water: the simulation, the surface, the pool.
   std::optional<sim::WaterDriver> water;
   std::optional<WaterSurface> waterSurface;
@@ -234,7 +244,7 @@ struct Renderer::Resources {
   std::optional<Objects> objects;
   std::optional<AmbientOcclusion> ao;
   std::optional<Glass> glass;
-  std::optional<Haze> haze;
+  std::optional<FrameResolve> resolve;
   std::optional<Aovs> aovs;  // when the renderer was made with them
   std::optional<MorphologicalAntialiasing> antialiasing;
   // Filled by render() for the frame being recorded.
@@ -370,6 +380,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   // Spheres with a path are where the path puts them at this frame's time.
   res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
+  res_->resolve->setWanted(request.hdr, request.ldr || request.present);
 
   gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it

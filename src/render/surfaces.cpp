@@ -66,10 +66,14 @@ void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& t, b
 }
 
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
-              const std::function<void()>& draw) {
-  auto colorTarget = attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
+              const std::function<void()>& draw, const gpu::Image* second) {
+  std::vector<vk::RenderingAttachmentInfo> colorTargets{
+      attachment(color, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad)};
+  if (second) {
+    colorTargets.push_back(attachment(*second, vk::ImageLayout::eColorAttachmentOptimal, vk::AttachmentLoadOp::eLoad));
+  }
   auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal, vk::AttachmentLoadOp::eLoad);
-  renderTo(cmd, std::span(&colorTarget, 1), &depthTarget, color.extent, draw);
+  renderTo(cmd, colorTargets, &depthTarget, color.extent, draw);
 }
 
 void renderTo(const vk::raii::CommandBuffer& cmd, std::span<const vk::RenderingAttachmentInfo> colors,
@@ -91,6 +95,7 @@ std::string fragmentVariant(const std::string& fragmentShader, FragmentNeeds nee
   if (!needs.shadows) name += ".no_shadows";
   if (needs.scattering) name += ".scattering";
   if (needs.glass) name += ".glass";
+  if (needs.clearAmbient) name += ".clear_ambient";
   return name + fragmentShader.substr(stage);
 }
 

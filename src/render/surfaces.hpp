@@ -65,9 +65,10 @@ void attachSurfaces(PassBuilder& pass, const SurfaceTargets& targets, bool first
 // surface covers).
 void drawSurfaces(const vk::raii::CommandBuffer& cmd, const SurfaceTargets& targets, bool first,
                   const std::function<void()>& draw);
-// Renders over what colour and depth already hold (both loaded and stored).
+// Renders over what colour and depth already hold (both loaded and stored),
+// and over a second colour target (the G-buffer's ambient image) when given.
 void drawOver(const vk::raii::CommandBuffer& cmd, const gpu::Image& color, const gpu::Image& depth,
-              const std::function<void()>& draw);
+              const std::function<void()>& draw, const gpu::Image* second = nullptr);
 
 // What a scene needs of a fragment shader, which picks its variant
 // (cmake/shaders.cmake): the G-buffer outputs, the sun shadows' code
@@ -86,6 +87,10 @@ struct FragmentNeeds {
   bool glossy = true;
   bool brickWalls = true;
   bool tiles = true;
+  // The water's shaders: write zero into the G-buffer's ambient image where
+  // the water is seen, so that the resolve pass takes AO from the opaque
+  // surfaces alone (render/frame_resolve.hpp).
+  bool clearAmbient = false;
 };
 
 // What the scene's opaque surfaces need (glass is the water's alone). With

@@ -35,6 +35,7 @@ WaterDeferred::WaterDeferred(const gpu::Context& ctx, FrameGraph& graph, vk::Ext
       tilesPipeline_(gpu::createComputePipeline(ctx, "water_shading_tiles.comp", sizeof(glm::uvec4))),
       shadePipeline_(gpu::createComputePipeline(ctx, fragmentVariant("water_surface_deferred.comp", needs),
                                                 sizeof(shader::WaterSurfaceParams), fragmentSpecialization(needs))),
+      clearAmbient_(needs.clearAmbient),
       tilesPerRow_((frame.width + kTile - 1) / kTile),
       tiles_(tilesPerRow_ * ((frame.height + kTile - 1) / kTile)) {
   for (size_t i = 0; i < gbuffer_.size(); ++i) {
@@ -109,6 +110,7 @@ void WaterDeferred::declare(FrameGraph& graph, const SurfaceTargets& targets, co
                         .storageImage(9, targets.color, Use::ComputeReadWrite)
                         .storageBuffer(15, tileListRef_, Use::ComputeReadIndirect);
     for (uint32_t i = 0; i < TP_WATER_GBUFFER_TARGETS; ++i) set.storageImage(10 + i, gbufferRefs_[i], Use::ComputeRead);
+    if (clearAmbient_) set.storageImage(16, targets.ambient, Use::ComputeReadWrite);
     return [this, water, &set](PassContext& pc) {
       gpu::bindPipeline(pc.cmd, shadePipeline_, params(water));
       set.bind(pc.cmd, shadePipeline_, pc.descriptors);

@@ -35,6 +35,7 @@ class WaterDeferred {
   shader::WaterSurfaceParams params(const WaterDraw& water) const;
 
   gpu::Pipeline gbufferPipeline_, tilesPipeline_, shadePipeline_;
+  bool clearAmbient_;  // FragmentNeeds::clearAmbient
   std::array<gpu::Image, TP_WATER_GBUFFER_TARGETS> gbuffer_;
   std::array<GraphImage, TP_WATER_GBUFFER_TARGETS> gbufferRefs_;
   gpu::Buffer tileTags_, tileList_;

@@ -1,5 +1,7 @@
 #include "render/water_surface.hpp"
 
+#include <stdexcept>
+
 #include "gpu/commands.hpp"
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
@@ -15,7 +17,7 @@ gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullM
   return {.vertexShader = "water_surface.vert",
           .fragmentShader = fragmentVariant(fragmentShader, needs),
           .pushSize = sizeof(shader::WaterSurfaceParams),
-          .colorFormats = {kHdrFormat},
+          .colorFormats = needs.clearAmbient ? std::vector{kHdrFormat, kGbufferFormat} : std::vector{kHdrFormat},
           .depthFormat = kDepthFormat,
           .depthTest = true,
           .depthWrite = true,
@@ -25,20 +27,27 @@ gpu::GraphicsPipelineDesc waterSide(const std::string& fragmentShader, vk::CullM
 }
 
 // The water's shaders have no G-buffer outputs and no colour-only variant;
-// their rays may meet glass.
-FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces) {
+// their rays may meet glass. The deferred shading and the side seen from
+// below may clear the ambient image.
+FragmentNeeds waterNeeds(const scene::Scene& scene, FragmentNeeds surfaces, bool clearAmbient) {
   FragmentNeeds needs = surfaces;
   needs.gbuffer = true;
   needs.glass = scene::hasGlass(scene);
+  needs.clearAmbient = clearAmbient;
   return needs;
 }
 
 }  // namespace
 
 WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene,
-                           FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred)
-    : below_(gpu::createGraphicsPipeline(
-          ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront, waterNeeds(scene, surfaces)))) {
+                           FragmentNeeds surfaces, sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred,
+                           bool clearAmbient)
+    : below_(gpu::createGraphicsPipeline(ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront,
+                                                        waterNeeds(scene, surfaces, clearAmbient)))),
+      clearAmbient_(clearAmbient) {
+  if (clearAmbient && (!deferred || apparentRefraction(scene))) {
+    throw std::logic_error("only the deferred water clears the ambient image");
+  }
   const auto gridIndices = waterGridStrips(scene.water.grid);
   indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
                                      "water grid indices");
@@ -54,12 +63,12 @@ WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const sce
                            vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, "underwater image");
     underwaterRef_ = graph.image("underwater", underwater_);
   } else if (deferred) {
-    deferred_.emplace(ctx, graph, frame, waterNeeds(scene, surfaces));
+    deferred_.emplace(ctx, graph, frame, waterNeeds(scene, surfaces, clearAmbient));
   }
   if (!deferred_) {
     above_.emplace(gpu::createGraphicsPipeline(
         ctx, waterSide(apparentRefraction(scene) ? "water_surface_apparent.frag" : "water_surface.frag",
-                       vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces))));
+                       vk::CullModeFlagBits::eBack, waterNeeds(scene, surfaces, false))));
   }
 }
 
@@ -86,6 +95,7 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
   graph.pass(deferred_ ? passes::kWaterBelow : passes::kWater, [this, targets, pool, in](PassBuilder& pass) {
     const gpu::Image& color = pass.attach(targets.color, Use::ColorReadWrite);
     const gpu::Image& depth = pass.attach(targets.depth, Use::DepthReadWrite);
+    const gpu::Image* ambient = clearAmbient_ ? &pass.attach(targets.ambient, Use::ColorReadWrite) : nullptr;
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
                         .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
@@ -98,15 +108,19 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
     set.sampledImage(6, pool.caustics, in.clamp, Use::FragmentSample)
         .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample)
         .constantStorageBuffer(8, *pool.floorVertices);
-    return [this, &color, &depth, &set](PassContext& pc) {
-      drawOver(pc.cmd, color, depth, [&] {
-        const std::vector<const gpu::Pipeline*> sides = above_ ? std::vector{&*above_, &below_} : std::vector{&below_};
-        for (const gpu::Pipeline* side : sides) {
-          gpu::bindPipeline(pc.cmd, *side, draw_.params);
-          set.bind(pc.cmd, *side, pc.descriptors);
-          drawWater(pc.cmd, draw_);
-        }
-      });
+    return [this, &color, &depth, ambient, &set](PassContext& pc) {
+      drawOver(
+          pc.cmd, color, depth,
+          [&] {
+            const std::vector<const gpu::Pipeline*> sides =
+                above_ ? std::vector{&*above_, &below_} : std::vector{&below_};
+            for (const gpu::Pipeline* side : sides) {
+              gpu::bindPipeline(pc.cmd, *side, draw_.params);
+              set.bind(pc.cmd, *side, pc.descriptors);
+              drawWater(pc.cmd, draw_);
+            }
+          },
+          ambient);
     };
   });
 }

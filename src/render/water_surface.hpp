@@ -20,9 +20,11 @@ class WaterSurface {
   // `surfaces`: what the opaque surfaces need (surfaceNeeds); the water's
   // shaders need the same and may meet glass. `deferred`: the accurate
   // mode's surface seen from above shaded once per pixel (WaterDeferred),
-  // rather than by its forward shader.
+  // rather than by its forward shader. `clearAmbient` (deferred only): the
+  // water writes zero into the G-buffer's ambient image where it is seen,
+  // for the resolve pass that takes AO after it (FragmentNeeds::clearAmbient).
   WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds surfaces,
-               sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred);
+               sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred, bool clearAmbient);
   const WaterDraw& draw() const { return draw_; }
   // The copy of the pool under the water, for the apparent-depth mode (else nothing).
   void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;
@@ -32,6 +34,7 @@ class WaterSurface {
   gpu::Buffer indices_;
   WaterDraw draw_;
   gpu::Pipeline below_;
+  bool clearAmbient_;
   std::optional<gpu::Pipeline> above_;  // forward; none when the side from above is shaded deferred
   gpu::Image underwater_;
   std::optional<GraphImage> underwaterRef_;  // the apparent-depth mode's

@@ -67,7 +67,7 @@ shader::SsaoParams ssaoParams(const scene::Ao& ao, uint32_t width, uint32_t heig
 
 shader::AoBlurParams aoBlurParams(const scene::Ao& ao, uint32_t direction, uint32_t width, uint32_t height) {
   const vk::Extent2D e = aoExtent(ao, width, height);
-  return {glm::uvec4(direction, ao.blurTaps, ao.blur == "bilateral" ? 1u : 0u, aoFactor(ao)),
+  return {glm::uvec4(direction, ao.blurTaps, ao.blur == "bilateral" ? 1u : 0u, 0u),
           glm::ivec4(-int(ao.blurTaps / 2), 0, 0, 0), glm::uvec4(e.width, e.height, 0u, 0u),
           glm::vec4(ao.blurDepthTolerance, 0.0f, 0.0f, 0.0f)};
 }
