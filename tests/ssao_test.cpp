@@ -86,8 +86,10 @@ class SsaoRenderTest : public GpuTest {
     s.boxes.clear();
     return s;
   }
+  // The grids whole: the reference traces the floor's whole grid from the
+  // G-buffer's points, which must lie on it (RendererOptions::coarseGrids).
   render::RenderedFrame renderAo(const scene::Scene& s, uint32_t w, uint32_t h, bool aovs = false) {
-    render::Renderer renderer(ctx(), s, w, h, {.aovs = aovs});
+    render::Renderer renderer(ctx(), s, w, h, {.aovs = aovs, .coarseGrids = false});
     return renderer.render({.frame = 10, .hdr = true, .aovs = aovs, .ao = true});
   }
 };

@@ -14,7 +14,8 @@ namespace tp::render {
 
 Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
            const gpu::Buffer& objects)
-    : walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
+    : floorMesh_(ctx, kPoolFloorGrid, false, "pool floor"),
+      walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
       floor_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))),
       // No light, so no variants but with and without the G-buffer.
@@ -25,13 +26,9 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
   floorTop_ = pool.terrain.w;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "pool uniforms");
-  const auto floorGridIndices = waterGridIndices(kPoolFloorGrid);
-  floorIndices_ = gpu::createFilledBuffer(ctx, floorGridIndices, vk::BufferUsageFlagBits::eIndexBuffer,
-                                          gpu::MemoryUse::Device, "pool floor indices");
   floorVertices_ = gpu::createFilledBuffer(ctx, model.floorVertices, vk::BufferUsageFlagBits::eStorageBuffer,
                                            gpu::MemoryUse::Device, "pool floor vertices");
-  draw_ = PoolDraw{&uniforms_,      &objects, &floorIndices_, uint32_t(floorGridIndices.size()), kPoolFloorGrid,
-                   &floorVertices_, {}};
+  draw_ = PoolDraw{&uniforms_, &objects, &floorMesh_, &floorVertices_, {}};
   if (scene.render.caustics) {
     caustics_ =
         gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
@@ -101,12 +98,7 @@ NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& ob
   floorVertices_ = gpu::createFilledBuffer(ctx, vertex, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device,
                                            "no pool floor vertices");
   caustics_ = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
-  draw_ = PoolDraw{&uniforms_,
-                   &objects,
-                   nullptr,
-                   0,
-                   0,
-                   &floorVertices_,
+  draw_ = PoolDraw{&uniforms_, &objects, nullptr, &floorVertices_,
                    graph.image("caustics", caustics_, vk::ImageLayout::eShaderReadOnlyOptimal)};
 }
 
@@ -115,10 +107,9 @@ void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, c
   cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
   set.bind(cmd, walls, arena);
   gpu::draw(cmd, kWallVertices);
-  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floorGrid, 0u, 0u, 0u));
+  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floor->vertices(), 0u, 0u, 0u));
   set.bind(cmd, floor, arena);
-  cmd.bindIndexBuffer(pool.floorIndices->handle(), 0, vk::IndexType::eUint32);
-  gpu::drawIndexed(cmd, pool.floorIndexCount);
+  pool.floor->draw(cmd);
 }
 
 }  // namespace tp::render

@@ -23,9 +23,7 @@ constexpr uint32_t kWallVertices = 24;                                   // pool
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
   const gpu::Buffer* objects = nullptr;
-  const gpu::Buffer* floorIndices = nullptr;
-  uint32_t floorIndexCount = 0;
-  uint32_t floorGrid = 0;                      // vertices per side
+  const GridMesh* floor = nullptr;             // the floor grid at the frame's step
   const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (PoolModel::floorVertices)
   GraphImage caustics;
 };
@@ -45,9 +43,13 @@ class Pool {
                std::function<bool()> onlyThroughWater) const;
   // The floor's highest point, in metres.
   float floorTop() const { return floorTop_; }
+  // The step the floor grid is drawn at from the next frame on
+  // (shading/grid_detail.hpp); returns whether it changed.
+  bool setFloorStep(uint32_t step) { return floorMesh_.setStep(step); }
 
  private:
-  gpu::Buffer uniforms_, floorIndices_, floorVertices_;
+  gpu::Buffer uniforms_, floorVertices_;
+  GridMesh floorMesh_;
   gpu::Image caustics_;
   PoolDraw draw_;
   gpu::Pipeline walls_, floor_, floorDepth_;

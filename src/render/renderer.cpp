@@ -27,7 +27,9 @@
 #include "render/water_surface.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/frustum.hpp"
+#include "shading/grid_detail.hpp"
 #include "shading/objects_model.hpp"
+#include "shading/pool_model.hpp"
 #include "shading/shadow_reach.hpp"
 #include "shading/water_model.hpp"
 #include "sim/water_driver.hpp"
@@ -55,6 +57,7 @@ struct Renderer::Resources {
   Resources(const gpu::Context& ctx, const scene::Scene& scene, vk::Extent2D frame, const RendererOptions& options)
       : live(scene),
         skipping(options.skipping),
+        coarseGrids(options.coarseGrids),
         descriptors(ctx),
         samplers(ctx),
         uniforms(gpu::createBuffer(ctx, sizeof(shader::FrameUniforms), vk::BufferUsageFlagBits::eUniformBuffer,
@@ -185,6 +188,20 @@ struct Renderer::Resources {
     aovInView.boxes = opaqueInView.boxes;
   }
 
+  // The water's and the floor's grids as finely as this frame shows them
+  // (the camera may have moved). The cached caustics draw the water's grid:
+  // a new step draws them again.
+  void setGridSteps(const scene::Scene& scene, const glm::mat4& viewProjection, glm::vec2 pixels) {
+    if (!waterSurface) return;
+    auto step = [&](float y, uint32_t vertices) {
+      return coarseGrids ? gridStep(viewProjection, pixels, {0.0f, y, 0.0f}, scene.water.extent, vertices) : 1u;
+    };
+    if (waterSurface->setGridStep(step(scene.water.level, scene.water.grid))) {
+      for (ResourceRef state : waterSurface->draw().state.refs) graph.touch(state);
+    }
+    pool->setFloorStep(step(scene.ground.height - scene.pool.depth, kPoolFloorGrid));
+  }
+
   // The readbacks a request asks for: their passes, and those they depend on, record.
   std::vector<ResourceRef> requestedOutputs(const FrameRequest& request) const {
     std::vector<ResourceRef> requested;
@@ -223,7 +240,8 @@ struct Renderer::Resources {
   }
 
   const scene::Scene& live;
-  bool skipping;  // RendererOptions::skipping
+  bool skipping;     // RendererOptions::skipping
+  bool coarseGrids;  // RendererOptions::coarseGrids
   FrameGraph graph;
   gpu::DescriptorArena descriptors;
   Samplers samplers;
@@ -373,6 +391,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   out.worldToCamera = centred.view;
   out.worldToNDC = centred.viewProjection;
   out.inverseProjection = centred.inverseProjection;
+  res_->setGridSteps(scene_, centred.viewProjection, glm::vec2(float(width_), float(height_)));
   if (res_->water && res_->water->plan(scene_, request.frame)) {
     for (ResourceRef state : res_->waterSurface->draw().state.refs)
       res_->graph.touch(state);  // uploaded outside the graph

@@ -52,6 +52,10 @@ struct RendererOptions {
   // come to rest (sim::WaterSleep), objects outside the view. Off, every frame
   // records all of it: the frame to compare against.
   bool skipping = true;
+  // Draw the water's and the pool floor's grids coarser where a quad of
+  // them would span a fraction of a pixel (shading/grid_detail.hpp); off,
+  // always whole: the frame the coarser grids' error is measured against.
+  bool coarseGrids = true;
 };
 
 struct RenderedFrame {

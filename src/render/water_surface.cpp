@@ -44,18 +44,15 @@ WaterSurface::WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const sce
                            bool clearAmbient)
     : below_(gpu::createGraphicsPipeline(ctx, waterSide("water_surface_below.frag", vk::CullModeFlagBits::eFront,
                                                         waterNeeds(scene, surfaces, clearAmbient)))),
-      clearAmbient_(clearAmbient) {
+      clearAmbient_(clearAmbient),
+      mesh_(ctx, scene.water.grid, true, "water grid") {
   if (clearAmbient && (!deferred || apparentRefraction(scene))) {
     throw std::logic_error("only the deferred water clears the ambient image");
   }
-  const auto gridIndices = waterGridStrips(scene.water.grid);
-  indices_ = gpu::createFilledBuffer(ctx, gridIndices, vk::BufferUsageFlagBits::eIndexBuffer, gpu::MemoryUse::Device,
-                                     "water grid indices");
   const ResourceRef state0 = graph.buffer("water state 0", stepper.buffer(0)).ref;
   const ResourceRef state1 = graph.buffer("water state 1", stepper.buffer(1)).ref;
   draw_ = WaterDraw{{{state0, state1}, [&stepper]() -> const gpu::Buffer& { return stepper.current(); }},
-                    &indices_,
-                    uint32_t(gridIndices.size()),
+                    &mesh_,
                     waterSurfaceParams(scene)};
   if (apparentRefraction(scene)) {
     underwater_ =

@@ -26,15 +26,18 @@ class WaterSurface {
   WaterSurface(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds surfaces,
                sim::GpuStepper& stepper, vk::Extent2D frame, bool deferred, bool clearAmbient);
   const WaterDraw& draw() const { return draw_; }
+  // The step the grid is drawn at from the next frame on (shading/grid_detail.hpp);
+  // returns whether it changed.
+  bool setGridStep(uint32_t step) { return mesh_.setStep(step); }
   // The copy of the pool under the water, for the apparent-depth mode (else nothing).
   void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const PoolDraw& pool, const FrameInputs& in) const;
 
  private:
-  gpu::Buffer indices_;
-  WaterDraw draw_;
   gpu::Pipeline below_;
   bool clearAmbient_;
+  GridMesh mesh_;
+  WaterDraw draw_;
   std::optional<gpu::Pipeline> above_;  // forward; none when the side from above is shaded deferred
   gpu::Image underwater_;
   std::optional<GraphImage> underwaterRef_;  // the apparent-depth mode's

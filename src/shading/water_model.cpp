@@ -1,6 +1,7 @@
 #include "shading/water_model.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
@@ -26,24 +27,41 @@ std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float ex
   return normals;
 }
 
-std::vector<uint32_t> waterGridStrips(uint32_t n) {
+namespace {
+
+// The rows (and columns) a grid of n vertices a side keeps at `step`: every
+// step-th from the first, and the last.
+std::vector<uint32_t> gridLines(uint32_t n, uint32_t step) {
+  if (step == 0) throw std::invalid_argument("a grid's step must be at least 1");
+  std::vector<uint32_t> lines;
+  for (uint32_t i = 0; i + 1 < n; i += step) lines.push_back(i);
+  lines.push_back(n - 1);
+  return lines;
+}
+
+}  // namespace
+
+std::vector<uint32_t> waterGridStrips(uint32_t n, uint32_t step) {
+  const std::vector<uint32_t> lines = gridLines(n, step);
   std::vector<uint32_t> indices;
-  indices.reserve(size_t(n - 1) * (2 * n + 1));
-  for (uint32_t j = 0; j + 1 < n; ++j) {
+  indices.reserve((lines.size() - 1) * (2 * lines.size() + 1));
+  for (size_t r = 0; r + 1 < lines.size(); ++r) {
     // a0 c0 a1 c1 ...: strip triangle 2i is (a, c, b) and 2i+1 (b, c, d), as in the list.
-    for (uint32_t i = 0; i < n; ++i) indices.insert(indices.end(), {j * n + i, (j + 1) * n + i});
+    for (const uint32_t i : lines) indices.insert(indices.end(), {lines[r] * n + i, lines[r + 1] * n + i});
     indices.push_back(kStripRestart);
   }
   return indices;
 }
 
-std::vector<uint32_t> waterGridIndices(uint32_t n) {
+std::vector<uint32_t> waterGridIndices(uint32_t n, uint32_t step) {
+  const std::vector<uint32_t> lines = gridLines(n, step);
   std::vector<uint32_t> indices;
-  indices.reserve(size_t(n - 1) * (n - 1) * 6);
-  for (uint32_t j = 0; j + 1 < n; ++j) {
-    for (uint32_t i = 0; i + 1 < n; ++i) {
-      const uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      indices.insert(indices.end(), {a, c, b, b, c, d});
+  indices.reserve((lines.size() - 1) * (lines.size() - 1) * 6);
+  for (size_t r = 0; r + 1 < lines.size(); ++r) {
+    for (size_t c = 0; c + 1 < lines.size(); ++c) {
+      const uint32_t a = lines[r] * n + lines[c], b = lines[r] * n + lines[c + 1], c0 = lines[r + 1] * n + lines[c],
+                     d = lines[r + 1] * n + lines[c + 1];
+      indices.insert(indices.end(), {a, c0, b, b, c0, d});
     }
   }
   return indices;

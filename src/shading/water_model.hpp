@@ -10,15 +10,18 @@
 
 namespace tp::render {
 
-// Two triangles per grid quad, counter-clockwise seen from above.
-std::vector<uint32_t> waterGridIndices(uint32_t n);
+// Two triangles per grid quad, counter-clockwise seen from above. With
+// `step` above 1, the coarser grid through every step-th row and column (and
+// the last), over the same vertices: a mesh of fewer triangles for frames in
+// which a quad is a fraction of a pixel (shading/grid_detail.hpp).
+std::vector<uint32_t> waterGridIndices(uint32_t n, uint32_t step = 1);
 // The same triangles, in the same order with the same corners first, as one
 // triangle strip per row of quads, rows separated by kStripRestart: a third of
 // the indices, so a third of the vertex shader invocations where the device
 // shades each index (lavapipe: on one thread, the cost of a mesh pass that
 // does not shrink with the frame).
 inline constexpr uint32_t kStripRestart = 0xFFFFFFFFu;
-std::vector<uint32_t> waterGridStrips(uint32_t n);
+std::vector<uint32_t> waterGridStrips(uint32_t n, uint32_t step = 1);
 shader::WaterSurfaceParams waterSurfaceParams(const scene::Scene& scene);
 // The ground's push constants, with the pool's hole when there is a pool.
 shader::GroundParams groundParams(const scene::Scene& scene);
