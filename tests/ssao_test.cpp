@@ -112,6 +112,33 @@ TEST_F(SsaoRenderTest, PlaneFacingTheCameraIsUnoccluded) {
   }
 }
 
+// The ground seen at a grazing angle, from a camera turned about its view
+// axis so that the depth slopes along both of the frame's axes: the depth
+// interpolated at each sample is exact on a plane, so the ground hides none
+// of itself; the nearest texel's depth (the original's) lies off the plane
+// and it occludes itself.
+TEST_F(SsaoRenderTest, GrazingPlaneIsUnoccludedWithInterpolatedDepth) {
+  scene::Scene s = groundOnly();
+  s.camera.position = {0.0f, 0.6f, 0.0f};
+  s.camera.target = {3.0f, 0.0f, -4.0f};
+  s.camera.up = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+  s.ao.blur = "off";
+  float lowest[2] = {1.0f, 1.0f};
+  const char* lookups[2] = {"interpolated", "nearest"};
+  for (int k = 0; k < 2; ++k) {
+    s.ao.depthLookup = lookups[k];
+    const auto f = renderAo(s, 96, 64);
+    for (size_t p = 0; p < f.aoRaw.size(); ++p) {
+      if (f.gbufferDepth[p] < 1.0f) lowest[k] = std::min(lowest[k], f.aoRaw[p]);
+    }
+    std::printf("grazing plane, %s depth: lowest AO %.6f\n", lookups[k], lowest[k]);
+  }
+  // Measured: 0.994 interpolated (the depth buffer's float steps against the
+  // bias), 0.625 nearest; the bilinear weights' axes swapped give 0.877.
+  EXPECT_GE(lowest[0], 0.98f);
+  EXPECT_LT(lowest[1], 0.9f);
+}
+
 // A wall (a box's face) standing on the ground: the ground's AO falls toward
 // the edge and is 1 beyond the radius; the wall's own pixels also darken at
 // the edge.
