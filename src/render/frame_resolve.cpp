@@ -15,9 +15,9 @@ FrameResolve::FrameResolve(const gpu::Context& ctx, const scene::Scene& scene, s
     params_.shape = ao_->params.shape;
   }
   params_.look = glm::vec4(scene.sky.hazeDistance, scene.render.exposure, 0.0f, 0.0f);
-  const std::string shader = !ao_ ? "resolve.comp" : ao_->upsample ? "resolve.ao_upsample.comp" : "resolve.ao.comp";
+  const std::string module = !ao_ ? "resolve.comp" : ao_->upsample ? "resolve.ao_upsample.comp" : "resolve.ao.comp";
   auto make = [&](bool hdr, bool ldr) {
-    return gpu::createComputePipeline(ctx, shader, sizeof(shader::ResolveParams),
+    return gpu::createComputePipeline(ctx, module, sizeof(shader::ResolveParams),
                                       gpu::Specialization()
                                           .set(TP_SPEC_HAZE, uint32_t(haze_))
                                           .set(TP_SPEC_STORE_HDR, uint32_t(hdr))
