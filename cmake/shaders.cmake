@@ -40,29 +40,28 @@ foreach(water water_surface.frag water_surface_deferred.comp water_surface_appar
     ${water}:TP_SCATTERING:${name}.scattering.${stage}
     ${water}:TP_NO_SHADOWS+TP_SCATTERING:${name}.no_shadows.scattering.${stage})
 endforeach()
+# Each water shader with `macro` (its modules named `suffix`), alone and
+# with the shadows left out, the scattering, and both.
+function(tidepool_water_variants macro suffix)
+  foreach(water ${ARGN})
+    string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
+    string(REGEX MATCH "[a-z]+$" stage ${water})
+    list(APPEND TIDEPOOL_SHADER_VARIANTS
+      ${water}:${macro}:${name}.${suffix}.${stage}
+      ${water}:TP_NO_SHADOWS+${macro}:${name}.no_shadows.${suffix}.${stage}
+      ${water}:TP_SCATTERING+${macro}:${name}.scattering.${suffix}.${stage}
+      ${water}:TP_NO_SHADOWS+TP_SCATTERING+${macro}:${name}.no_shadows.scattering.${suffix}.${stage})
+  endforeach()
+  set(TIDEPOOL_SHADER_VARIANTS ${TIDEPOOL_SHADER_VARIANTS} PARENT_SCOPE)
+endfunction()
 # The water's rays meeting glass (lib/scene_rays.glsl's backdrop), for
 # scenes with glass spheres: the casts they add cost compile time.
-foreach(water water_surface.frag water_surface_deferred.comp water_surface_apparent.frag water_surface_below.frag)
-  string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
-  string(REGEX MATCH "[a-z]+$" stage ${water})
-  list(APPEND TIDEPOOL_SHADER_VARIANTS
-    ${water}:TP_GLASS:${name}.glass.${stage}
-    ${water}:TP_NO_SHADOWS+TP_GLASS:${name}.no_shadows.glass.${stage}
-    ${water}:TP_SCATTERING+TP_GLASS:${name}.scattering.glass.${stage}
-    ${water}:TP_NO_SHADOWS+TP_SCATTERING+TP_GLASS:${name}.no_shadows.scattering.glass.${stage})
-endforeach()
+tidepool_water_variants(TP_GLASS glass water_surface.frag water_surface_deferred.comp water_surface_apparent.frag
+                        water_surface_below.frag)
 # The water's passes that write zero into the G-buffer's ambient image where
 # the water is seen, for frames whose resolve pass takes AO after the water
 # (render/frame_resolve.hpp); never with glass, whose frames apply AO before it.
-foreach(water water_surface_deferred.comp water_surface_below.frag)
-  string(REGEX REPLACE "\\.[a-z]+$" "" name ${water})
-  string(REGEX MATCH "[a-z]+$" stage ${water})
-  list(APPEND TIDEPOOL_SHADER_VARIANTS
-    ${water}:TP_CLEAR_AMBIENT:${name}.clear_ambient.${stage}
-    ${water}:TP_NO_SHADOWS+TP_CLEAR_AMBIENT:${name}.no_shadows.clear_ambient.${stage}
-    ${water}:TP_SCATTERING+TP_CLEAR_AMBIENT:${name}.scattering.clear_ambient.${stage}
-    ${water}:TP_NO_SHADOWS+TP_SCATTERING+TP_CLEAR_AMBIENT:${name}.no_shadows.scattering.clear_ambient.${stage})
-endforeach()
+tidepool_water_variants(TP_CLEAR_AMBIENT clear_ambient water_surface_deferred.comp water_surface_below.frag)
 # The resolve pass with the AO taken in it, at full and at half resolution.
 list(APPEND TIDEPOOL_SHADER_VARIANTS resolve.comp:TP_AO:resolve.ao.comp resolve.comp:TP_AO+TP_AO_UPSAMPLE:resolve.ao_upsample.comp)
 

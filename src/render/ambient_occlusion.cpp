@@ -46,8 +46,10 @@ AmbientOcclusion::AmbientOcclusion(const gpu::Context& ctx, FrameGraph& graph, c
                                     gpu::MemoryUse::Upload, "SSAO kernel");
 }
 
-AoForResolve AmbientOcclusion::forResolve(const SurfaceTargets& surfaces) const {
-  return {surfaces.ambient, lowResult(), viewDepth_, bool(full_), aoUpsampleParams(ao_, frame_.width, frame_.height)};
+std::optional<AoForResolve> AmbientOcclusion::forResolve(const SurfaceTargets& surfaces) const {
+  if (apply_) return std::nullopt;  // its own pass applies it
+  return AoForResolve{surfaces.ambient, lowResult(), viewDepth_, bool(full_),
+                      aoUpsampleParams(ao_, frame_.width, frame_.height)};
 }
 
 void AmbientOcclusion::declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const {

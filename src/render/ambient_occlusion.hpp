@@ -35,7 +35,8 @@ class AmbientOcclusion {
   // The SSAO, the blur, the pass that applies the AO (unless applied
   // later) and the readbacks.
   void declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
-  AoForResolve forResolve(const SurfaceTargets& surfaces) const;
+  // What the resolve pass reads, when it applies the AO (`applyLater`).
+  std::optional<AoForResolve> forResolve(const SurfaceTargets& surfaces) const;
   // What a frame requests to read the AO back.
   std::vector<ResourceRef> readbackRefs() const;
   vk::Extent2D lowExtent() const { return low_; }
@@ -61,8 +62,9 @@ class AmbientOcclusion {
   scene::Ao ao_;
   vk::Extent2D frame_, low_;
   gpu::Image rawImage_, viewDepthImage_, blurXImage_, blurredImage_, fullImage_;
-  GraphImage raw_, viewDepth_, blurX_, blurred_, full_;  // viewDepth_: shader::aoViewDepth per AO pixel  // no blur
-                                                         // images with the blur off; no full image at full resolution
+  // viewDepth_: shader::aoViewDepth per AO pixel; no blur images with the
+  // blur off; no full image at full resolution.
+  GraphImage raw_, viewDepth_, blurX_, blurred_, full_;
   gpu::Buffer kernel_;
   gpu::Pipeline ssao_, blur_, upsample_;
   std::optional<gpu::Pipeline> apply_;  // none when the AO is applied later

@@ -18,7 +18,6 @@ class GridMesh {
   // (waterGridIndices).
   GridMesh(const gpu::Context& ctx, uint32_t vertices, bool strips, const std::string& name);
   uint32_t vertices() const { return vertices_; }
-  uint32_t step() const { return 1u << level_; }
   // Returns whether it changed. `step`: 1, 2 or 4.
   bool setStep(uint32_t step);
   // Binds the step's indices and draws them; the pipeline is bound.

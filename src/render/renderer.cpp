@@ -118,9 +118,7 @@ struct Renderer::Resources {
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
     // The AO when it is taken after the water, the air between the camera
     // and every surface (the water's too), the tonemap.
-    std::optional<AoForResolve> aoInResolve;
-    if (ao && aoAfterWater(scene, skipping)) aoInResolve = ao->forResolve(surfaces);
-    resolve.emplace(ctx, scene, aoInResolve);
+    resolve.emplace(ctx, scene, ao ? ao->forResolve(surfaces) : std::nullopt);
     if (options.aovs) {
       aovs.emplace(ctx, graph, frame, pool.has_value());
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
