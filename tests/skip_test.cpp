@@ -221,6 +221,13 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
         EXPECT_EQ(recorded(a, render::passes::kCaustics), i == 0 || i == 3 || recorded(a, render::passes::kSimulate));
         EXPECT_TRUE(recorded(b, render::passes::kCaustics));
       }
+      // Still camera and objects: the opaque surfaces' depth and normals do
+      // not change, so the AO made on the first frame stands.
+      if (s.ao.enabled) {
+        EXPECT_EQ(recorded(a, render::passes::kSsao), i == 0);
+        EXPECT_EQ(recorded(a, render::passes::kAoBlurY), i == 0);
+        EXPECT_TRUE(recorded(b, render::passes::kSsao));
+      }
       // With nothing skipped, the scene's every pass is there.
       if (s.water.enabled && frame > 0) {
         EXPECT_TRUE(recorded(b, render::passes::kSimulate));
@@ -229,6 +236,65 @@ TEST_F(SkipTest, EachVariantSkipsWhatItDoesNotNeedAndDrawsTheSameBits) {
       EXPECT_TRUE(recorded(b, render::passes::kObjects));
       EXPECT_TRUE(anyPassUses(b, "view normal"));
     }
+  }
+}
+
+// The SSAO and its blur run again when what the opaque surfaces' depth and
+// normals follow from changes (render/opaque_geometry.hpp): the camera, a
+// sample's jitter, a sphere dragged or on its path. Each frame is the frame
+// of a renderer that records everything, given the same calls, to the bit.
+TEST_F(SkipTest, TheAoIsMadeAgainOnlyWhenTheOpaqueSurfacesMayHaveChanged) {
+  scene::Scene s = scene::defaultScene();
+  s.spheres.push_back({.center = {-2.6f, 0.4f, -1.0f}, .radius = 0.4f});  // on the ground past the far wall
+  scene::Camera turned = s.camera;
+  turned.position = {3.0f, 1.6f, 4.6f};
+  struct Step {
+    std::string what;
+    std::function<void(render::Renderer&)> change;
+    render::FrameRequest request;
+    bool ssao;  // the skipping renderer makes the AO again
+  };
+  const std::vector<Step> steps{
+      {"first frame", [](render::Renderer&) {}, {.frame = 0}, true},
+      {"nothing moved", [](render::Renderer&) {}, {.frame = 1}, false},
+      {"the camera moved", [&](render::Renderer& r) { r.setCamera(turned); }, {.frame = 2}, true},
+      {"still again", [](render::Renderer&) {}, {.frame = 3}, false},
+      {"a sphere dragged on the ground",
+       [](render::Renderer& r) {
+         r.moveSphere(1, {-2.2f, 0.4f, -1.3f});
+       },
+       {.frame = 4},
+       true},
+      {"still again", [](render::Renderer&) {}, {.frame = 5}, false},
+      {"a jittered sample", [](render::Renderer&) {}, {.frame = 6, .pixelOffset = {0.25f, -0.25f}}, true},
+      {"the same sample", [](render::Renderer&) {}, {.frame = 7, .pixelOffset = {0.25f, -0.25f}}, false},
+      {"the camera back", [&](render::Renderer& r) { r.setCamera(s.camera); }, {.frame = 8}, true},
+  };
+  render::Renderer skipping(ctx(), s, kWidth, kHeight);
+  render::Renderer everything(ctx(), s, kWidth, kHeight, {.skipping = false});
+  for (const Step& step : steps) {
+    SCOPED_TRACE(step.what + ", frame " + std::to_string(step.request.frame));
+    step.change(skipping);
+    step.change(everything);
+    render::FrameRequest request = step.request;
+    request.ldr = true;
+    const auto a = skipping.render(request);
+    const auto b = everything.render(request);
+    EXPECT_EQ(differingPixels(a, b), 0u);
+    EXPECT_TRUE(a.srgb == b.srgb);
+    EXPECT_EQ(recorded(a, render::passes::kSsao), step.ssao);
+    EXPECT_EQ(recorded(a, render::passes::kAoBlurX), step.ssao);
+  }
+
+  // A sphere on a path moves every frame: the AO is made every frame.
+  s.spheres[1].path = {{0.0f, {-2.6f, 0.4f, -1.0f}}, {1.0f, {-2.0f, 0.4f, -1.6f}}};
+  render::Renderer moving(ctx(), s, kWidth, kHeight);
+  render::Renderer movingEverything(ctx(), s, kWidth, kHeight, {.skipping = false});
+  for (uint32_t frame = 0; frame < 3; ++frame) {
+    SCOPED_TRACE("a sphere on a path, frame " + std::to_string(frame));
+    const auto a = moving.render({.frame = frame});
+    EXPECT_TRUE(a.rgba == movingEverything.render({.frame = frame}).rgba);
+    EXPECT_TRUE(recorded(a, render::passes::kSsao));
   }
 }
 

@@ -139,7 +139,8 @@ void addFrameBench(CLI::App* bench, BenchFrameOptions& o) {
 void addPassesBench(CLI::App* bench, BenchPassesOptions& o) {
   CLI::App* passes = bench->add_subcommand(
       "passes",
-      "Where a frame's time goes: each pass's wall ms (submitted on its own) and the frame's fps, per resolution");
+      "Where a frame's time goes: each pass's wall ms (submitted on its own) and the frame's fps, per resolution; "
+      "the camera moves as the scene's path or turntable says (camera.turntable=20: a moving camera's frame)");
   addSceneSourceOptions(passes, o.scene, "Scene file (JSON); default: the built-in scene");
   addSizesOption(passes, o.resolutions);
   passes->add_option("--frames", o.frames, "Timed frames of each kind (whole, pass by pass) per resolution")

@@ -25,20 +25,29 @@ struct Measured {
   std::map<std::string, PassTimes> passes;
 };
 
+// The scene's camera where its path or turntable puts it at `frame`, as
+// render --frames moves it: a still camera's frame keeps what a moving
+// camera's draws again (the SSAO).
+render::RenderedFrame renderAt(render::Renderer& renderer, const scene::Scene& s, render::FrameRequest request) {
+  if (scene::isAnimated(s.camera))
+    renderer.setCamera(scene::cameraAt(s.camera, float(request.frame) * s.water.frameTime));
+  return renderer.render(request);
+}
+
 Measured measure(const gpu::Context& ctx, const scene::Scene& s, const Resolution& r, uint32_t frames) {
   render::Renderer renderer(ctx, s, r.width, r.height);
-  renderer.render({.frame = 0});  // pipelines compiled, cached passes filled
+  renderAt(renderer, s, {.frame = 0});  // pipelines compiled, cached passes filled
   Measured m;
   std::vector<double> frameMs;
   uint32_t frame = 1;
   for (uint32_t k = 0; k < frames; ++k, ++frame) {
     const auto start = std::chrono::steady_clock::now();
-    renderer.render({.frame = frame});
+    renderAt(renderer, s, {.frame = frame});
     frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   m.frameMs = median(frameMs);
   for (uint32_t k = 0; k < frames; ++k, ++frame) {
-    for (const auto& pass : renderer.render({.frame = frame, .passWallTimes = true}).passes) {
+    for (const auto& pass : renderAt(renderer, s, {.frame = frame, .passWallTimes = true}).passes) {
       if (!m.passes.count(pass.name)) m.order.push_back(pass.name);
       m.passes[pass.name].wall.push_back(pass.wallMilliseconds);
       m.passes[pass.name].gpu.push_back(pass.milliseconds);

@@ -52,22 +52,27 @@ std::optional<AoForResolve> AmbientOcclusion::forResolve(const SurfaceTargets& s
                       aoUpsampleParams(ao_, frame_.width, frame_.height)};
 }
 
-void AmbientOcclusion::declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const {
+void AmbientOcclusion::declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in,
+                               const std::function<bool()>& surfacesChanged) const {
   const shader::SsaoParams params = ssaoParams(ao_, frame_.width, frame_.height);
-  graph.pass(passes::kSsao, [&, surfaces, in, params](PassBuilder& pass) {
-    Bindings& set = pass.bindings()
-                        .uniformBuffer(0, in.uniforms, Use::HostData)
-                        .sampledImage(1, surfaces.depth, in.nearest, Use::ComputeSample)
-                        .storageImage(2, surfaces.normal, Use::ComputeRead)
-                        .constantBuffer(3, kernel_)
-                        .storageImage(4, raw_, Use::ComputeWrite)
-                        .storageImage(5, viewDepth_, Use::ComputeWrite);
-    return [this, &set, params](PassContext& pc) {
-      gpu::bindPipeline(pc.cmd, ssao_, params);
-      set.bind(pc.cmd, ssao_, pc.descriptors);
-      gpu::dispatchCovering(pc.cmd, ssao_, params.size.x, params.size.y);
-    };
-  });
+  const PassOptions fromSurfaces{.cached = false, .runIf = surfacesChanged};
+  graph.pass(
+      passes::kSsao,
+      [&, surfaces, in, params](PassBuilder& pass) {
+        Bindings& set = pass.bindings()
+                            .uniformBuffer(0, in.uniforms, Use::HostData)
+                            .sampledImage(1, surfaces.depth, in.nearest, Use::ComputeSample)
+                            .storageImage(2, surfaces.normal, Use::ComputeRead)
+                            .constantBuffer(3, kernel_)
+                            .storageImage(4, raw_, Use::ComputeWrite)
+                            .storageImage(5, viewDepth_, Use::ComputeWrite);
+        return [this, &set, params](PassContext& pc) {
+          gpu::bindPipeline(pc.cmd, ssao_, params);
+          set.bind(pc.cmd, ssao_, pc.descriptors);
+          gpu::dispatchCovering(pc.cmd, ssao_, params.size.x, params.size.y);
+        };
+      },
+      fromSurfaces);
   const vk::Extent2D size{params.size.x, params.size.y};
   if (blurred_) {
     for (const uint32_t direction : {0u, 1u}) {
@@ -75,7 +80,8 @@ void AmbientOcclusion::declare(FrameGraph& graph, const SurfaceTargets& surfaces
       declareFilter(
           graph, direction == 0 ? passes::kAoBlurX : passes::kAoBlurY, blur_, surfaces, in,
           direction == 0 ? raw_ : blurX_, direction == 0 ? blurX_ : blurred_,
-          [this, push](const vk::raii::CommandBuffer& cmd) { gpu::bindPipeline(cmd, blur_, push); }, size, false);
+          [this, push](const vk::raii::CommandBuffer& cmd) { gpu::bindPipeline(cmd, blur_, push); }, size, false,
+          fromSurfaces);
     }
   }
   // The upsampled AO as an image, for its readback alone: the graph leaves
@@ -127,21 +133,25 @@ void AmbientOcclusion::declareFilter(FrameGraph& graph, const PassKind& kind, co
                                      const SurfaceTargets& surfaces, const FrameInputs& in, const GraphImage& from,
                                      const GraphImage& to,
                                      const std::function<void(const vk::raii::CommandBuffer&)>& push, vk::Extent2D size,
-                                     bool frameDepth) const {
-  graph.pass(kind, [this, &pipeline, surfaces, in, from, to, push, size, frameDepth](PassBuilder& pass) {
-    Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
-    if (frameDepth) {
-      set.sampledImage(1, surfaces.depth, in.nearest, Use::ComputeSample).storageImage(4, viewDepth_, Use::ComputeRead);
-    } else {
-      set.storageImage(1, viewDepth_, Use::ComputeRead);
-    }
-    set.storageImage(2, from, Use::ComputeRead).storageImage(3, to, Use::ComputeWrite);
-    return [&pipeline, &set, push, size](PassContext& pc) {
-      push(pc.cmd);
-      set.bind(pc.cmd, pipeline, pc.descriptors);
-      gpu::dispatchCovering(pc.cmd, pipeline, size.width, size.height);
-    };
-  });
+                                     bool frameDepth, PassOptions options) const {
+  graph.pass(
+      kind,
+      [this, &pipeline, surfaces, in, from, to, push, size, frameDepth](PassBuilder& pass) {
+        Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+        if (frameDepth) {
+          set.sampledImage(1, surfaces.depth, in.nearest, Use::ComputeSample)
+              .storageImage(4, viewDepth_, Use::ComputeRead);
+        } else {
+          set.storageImage(1, viewDepth_, Use::ComputeRead);
+        }
+        set.storageImage(2, from, Use::ComputeRead).storageImage(3, to, Use::ComputeWrite);
+        return [&pipeline, &set, push, size](PassContext& pc) {
+          push(pc.cmd);
+          set.bind(pc.cmd, pipeline, pc.descriptors);
+          gpu::dispatchCovering(pc.cmd, pipeline, size.width, size.height);
+        };
+      },
+      std::move(options));
 }
 
 std::vector<ResourceRef> AmbientOcclusion::readbackRefs() const {

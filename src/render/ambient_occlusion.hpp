@@ -33,8 +33,12 @@ class AmbientOcclusion {
   AmbientOcclusion(const gpu::Context& ctx, FrameGraph& graph, const scene::Ao& ao, vk::Extent2D frame,
                    bool applyLater);
   // The SSAO, the blur, the pass that applies the AO (unless applied
-  // later) and the readbacks.
-  void declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
+  // later) and the readbacks. `surfacesChanged`, asked every frame: false
+  // when the opaque surfaces' depth and normals are the same as when the
+  // SSAO last ran (render/opaque_geometry.hpp), which leaves the SSAO and
+  // its blur out and the AO as they made it.
+  void declare(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in,
+               const std::function<bool()>& surfacesChanged) const;
   // What the resolve pass reads, when it applies the AO (`applyLater`).
   std::optional<AoForResolve> forResolve(const SurfaceTargets& surfaces) const;
   // What a frame requests to read the AO back.
@@ -56,7 +60,7 @@ class AmbientOcclusion {
   void declareFilter(FrameGraph& graph, const PassKind& kind, const gpu::Pipeline& pipeline,
                      const SurfaceTargets& surfaces, const FrameInputs& in, const GraphImage& from,
                      const GraphImage& to, const std::function<void(const vk::raii::CommandBuffer&)>& push,
-                     vk::Extent2D size, bool frameDepth) const;
+                     vk::Extent2D size, bool frameDepth, PassOptions options = {}) const;
   void declareApply(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
 
   scene::Ao ao_;

@@ -21,6 +21,7 @@
 #include "render/ground.hpp"
 #include "render/morphological_aa.hpp"
 #include "render/objects.hpp"
+#include "render/opaque_geometry.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/pool.hpp"
 #include "render/sky.hpp"
@@ -104,7 +105,7 @@ struct Renderer::Resources {
     // copy of the pool then has it too. Applied here, or by the resolve.
     if (scene.ao.enabled) {
       ao.emplace(ctx, graph, scene.ao, frame, aoAfterWater(scene, skipping));
-      ao->declare(graph, surfaces, in);
+      ao->declare(graph, surfaces, in, [this] { return !skipping || aoGeometry != geometry; });
     }
     if (waterSurface) waterSurface->declareUnderwater(graph, surfaces.color);
     // Glass after AO (it neither occludes nor is occluded) and after the
@@ -197,7 +198,8 @@ struct Renderer::Resources {
     if (waterSurface->setGridStep(step(scene.water.level, scene.water.grid))) {
       for (ResourceRef state : waterSurface->draw().state.refs) graph.touch(state);
     }
-    pool->setFloorStep(step(scene.ground.height - scene.pool.depth, kPoolFloorGrid));
+    floorStep = step(scene.ground.height - scene.pool.depth, kPoolFloorGrid);
+    pool->setFloorStep(floorStep);
   }
 
   // The readbacks a request asks for: their passes, and those they depend on, record.
@@ -267,7 +269,10 @@ struct Renderer::Resources {
   ObjectsInView opaqueInView;  // the opaque spheres and the boxes in view
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
   std::vector<shader::GlassSphereParams> glassInView;
-  bool mediumMayNotBeAir = false;  // the camera medium pass last ran with the camera over the water
+  bool mediumMayNotBeAir = false;            // the camera medium pass last ran with the camera over the water
+  uint32_t floorStep = 1;                    // the pool floor grid's, set by setGridSteps
+  OpaqueGeometry geometry;                   // the frame being recorded's
+  std::optional<OpaqueGeometry> aoGeometry;  // the frame's where the SSAO last ran
 };
 
 Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
@@ -396,6 +401,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }
   // Spheres with a path are where the path puts them at this frame's time.
   res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
+  res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->floorStep);
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
   res_->resolve->setWanted(request.hdr, request.ldr || request.present);
 
@@ -429,6 +435,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     simulate->counts.workgroups += listedTiles;
   }
   if (findPass(out.passes, passes::kCameraMedium)) res_->mediumMayNotBeAir = cameraOverWater(scene_);
+  if (findPass(out.passes, passes::kSsao)) res_->aoGeometry = res_->geometry;
   out.waterAsleep = res_->water && !simulate;
   out.waterEnergy = res_->water ? res_->water->energyPerArea() : 0.0;
   res_->readBack(request, out);

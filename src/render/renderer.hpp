@@ -48,9 +48,10 @@ struct RendererOptions {
   bool aovs = false;  // make the targets and the pass for arbitrary output variables
   // Leave out what a frame does not need: the G-buffer without AO, the camera
   // medium with the camera away from the water, passes whose inputs have not
-  // changed (sky, caustics, camera medium), the simulation of water that has
-  // come to rest (sim::WaterSleep), objects outside the view. Off, every frame
-  // records all of it: the frame to compare against.
+  // changed (sky, caustics, camera medium), the SSAO while the opaque
+  // surfaces stand still (render/opaque_geometry.hpp), the simulation of
+  // water that has come to rest (sim::WaterSleep), objects outside the view.
+  // Off, every frame records all of it: the frame to compare against.
   bool skipping = true;
   // Draw the water's and the pool floor's grids coarser where a quad of
   // them would span a fraction of a pixel (shading/grid_detail.hpp); off,
