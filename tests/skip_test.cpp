@@ -379,7 +379,7 @@ TEST_F(SkipTest, DeferredWaterShadesOnlyWhatThisFrameCovers) {
 TEST_F(SkipTest, CountersMatchWhatThePassesRecord) {
   const scene::Scene s = scene::defaultScene();
   render::Renderer renderer(ctx(), s, kWidth, kHeight);
-  renderer.render({.frame = 0});
+  const auto first = renderer.render({.frame = 0});
   const auto f = renderer.render({.frame = 1});
   const uint32_t substeps = sim::waterSubsteps(s.water);
   const uint32_t n = s.water.grid;
@@ -390,8 +390,11 @@ TEST_F(SkipTest, CountersMatchWhatThePassesRecord) {
   EXPECT_EQ(simulate->counts.workgroups, uint64_t(substeps - 1) * (n / 64) * n + tiles + 1 + tiles);
   EXPECT_EQ(simulate->counts.draws, 0u);
   EXPECT_EQ(find(f, render::passes::kGround)->counts.draws, 1u);
-  EXPECT_EQ(find(f, render::passes::kPool)->counts.draws, 2u);     // walls, floor
-  EXPECT_EQ(find(f, render::passes::kObjects)->counts.draws, 1u);  // the sphere
+  // The floor, seen only through the water, gives the SSAO its depth and
+  // normal on the first frame; on the next the AO stands and it is not drawn.
+  EXPECT_EQ(find(first, render::passes::kPool)->counts.draws, 2u);  // walls, floor
+  EXPECT_EQ(find(f, render::passes::kPool)->counts.draws, 1u);      // walls
+  EXPECT_EQ(find(f, render::passes::kObjects)->counts.draws, 1u);   // the sphere
   // The water deferred: the mesh seen from above into the G-buffer, its tiles
   // listed, its pixels shaded; then the mesh seen from below, forward.
   EXPECT_EQ(find(f, render::passes::kWaterGbuffer)->counts.draws, 1u);

@@ -79,7 +79,7 @@ void Aovs::declare(FrameGraph& graph, const FrameInputs& in, const shader::Groun
         gpu::bindPipeline(cmd, ground_, ground);
         set.bind(cmd, ground_, pc.descriptors);
         gpu::draw(cmd, kGroundVertices);
-        if (poolDraw) drawPool(cmd, pc.descriptors, *walls_, *floor_, set, *poolDraw);
+        if (poolDraw) drawPool(cmd, pc.descriptors, *walls_, &*floor_, set, *poolDraw);
         drawObjects(cmd, pc.descriptors, spheres_, boxes_, set, inView);
         if (waterDraw) {
           gpu::bindPipeline(cmd, *water_, waterDraw->params);

@@ -71,8 +71,8 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
 }
 
 void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-                   std::function<bool()> onlyThroughWater) const {
-  graph.pass(passes::kPool, [this, targets, in, onlyThroughWater](PassBuilder& pass) {
+                   std::function<Floor()> floor) const {
+  graph.pass(passes::kPool, [this, targets, in, floor](PassBuilder& pass) {
     attachSurfaces(pass, targets, false);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
@@ -81,9 +81,13 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
                         .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
                         .constantStorageBuffer(5, floorVertices_);
-    return [this, targets, &set, onlyThroughWater](PassContext& pc) {
-      const gpu::Pipeline& floor = onlyThroughWater() ? floorDepth_ : floor_;
-      drawSurfaces(pc.cmd, targets, false, [&] { drawPool(pc.cmd, pc.descriptors, walls_, floor, set, draw_); });
+    return [this, targets, &set, floor](PassContext& pc) {
+      const Floor how = floor();
+      const gpu::Pipeline* floorPipeline = how == Floor::Lit              ? &floor_
+                                           : how == Floor::DepthAndNormal ? &floorDepth_
+                                                                          : nullptr;
+      drawSurfaces(pc.cmd, targets, false,
+                   [&] { drawPool(pc.cmd, pc.descriptors, walls_, floorPipeline, set, draw_); });
     };
   });
 }
@@ -103,12 +107,13 @@ NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& ob
 }
 
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
-              const gpu::Pipeline& floor, const Bindings& set, const PoolDraw& pool) {
+              const gpu::Pipeline* floor, const Bindings& set, const PoolDraw& pool) {
   cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
   set.bind(cmd, walls, arena);
   gpu::draw(cmd, kWallVertices);
-  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floor->vertices(), 0u, 0u, 0u));
-  set.bind(cmd, floor, arena);
+  if (!floor) return;
+  gpu::bindPipeline(cmd, *floor, glm::uvec4(pool.floor->vertices(), 0u, 0u, 0u));
+  set.bind(cmd, *floor, arena);
   pool.floor->draw(cmd);
 }
 

@@ -36,11 +36,16 @@ class Pool {
   const PoolDraw& draw() const { return draw_; }
   // The caustics pass, when the scene has caustics.
   void declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const;
-  // `onlyThroughWater`, asked as each frame records: whether the camera sees
-  // the floor only through the water, whose shader then shows it; the floor
-  // then gives its depth and normal alone (pool_floor_depth.frag).
+  // How the floor is drawn in a frame.
+  enum class Floor {
+    Lit,             // seen: its light (pool_floor.frag)
+    DepthAndNormal,  // seen only through the water, whose shader shows it, and read by
+                     // the SSAO: its depth and normal alone (pool_floor_depth.frag)
+    None,            // seen only through the water, and read by nothing
+  };
+  // `floor` is asked as each frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-               std::function<bool()> onlyThroughWater) const;
+               std::function<Floor()> floor) const;
   // The floor's highest point, in metres.
   float floorTop() const { return floorTop_; }
   // The step the floor grid is drawn at from the next frame on
@@ -72,8 +77,8 @@ class NoPool {
   PoolDraw draw_;
 };
 
-// The walls, then the floor, with `set` holding what either reads.
+// The walls, then the floor (none: no floor), with `set` holding what either reads.
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
-              const gpu::Pipeline& floor, const Bindings& set, const PoolDraw& pool);
+              const gpu::Pipeline* floor, const Bindings& set, const PoolDraw& pool);
 
 }  // namespace tp::render

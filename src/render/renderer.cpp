@@ -89,7 +89,10 @@ struct Renderer::Resources {
     });
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
-        return skipping && floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop());
+        if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
+          return Pool::Floor::Lit;
+        // Nothing else reads the depth the water draws over.
+        return aoMakesItsInputs() ? Pool::Floor::DepthAndNormal : Pool::Floor::None;
       });
     }
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
@@ -202,6 +205,10 @@ struct Renderer::Resources {
     pool->setFloorStep(floorStep);
   }
 
+  // Whether this frame's opaque surfaces must give the SSAO its depth and
+  // normals: it runs (they may have changed), or the frame reads them back.
+  bool aoMakesItsInputs() const { return ao && (!skipping || aoGeometry != geometry || aoReadback); }
+
   // The readbacks a request asks for: their passes, and those they depend on, record.
   std::vector<ResourceRef> requestedOutputs(const FrameRequest& request) const {
     std::vector<ResourceRef> requested;
@@ -273,6 +280,7 @@ struct Renderer::Resources {
   uint32_t floorStep = 1;                    // the pool floor grid's, set by setGridSteps
   OpaqueGeometry geometry;                   // the frame being recorded's
   std::optional<OpaqueGeometry> aoGeometry;  // the frame's where the SSAO last ran
+  bool aoReadback = false;                   // the frame being recorded reads back the AO and its G-buffer
 };
 
 Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, uint32_t width, uint32_t height,
@@ -402,6 +410,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   // Spheres with a path are where the path puts them at this frame's time.
   res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
   res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->floorStep);
+  res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
   res_->resolve->setWanted(request.hdr, request.ldr || request.present);
 
