@@ -51,4 +51,11 @@ std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Acce
   return out;
 }
 
+void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to) {
+  cmd.copyImage(from.handle(), vk::ImageLayout::eTransferSrcOptimal, to.handle(), vk::ImageLayout::eTransferDstOptimal,
+                vk::ImageCopy{.srcSubresource = {from.aspect, 0, 0, 1},
+                              .dstSubresource = {to.aspect, 0, 0, 1},
+                              .extent = {from.extent.width, from.extent.height, 1}});
+}
+
 }  // namespace tp::gpu

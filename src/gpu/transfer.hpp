@@ -33,4 +33,8 @@ std::vector<T> readBufferAs(const Context& ctx, const Buffer& buffer, Access src
   return out;
 }
 
+// Records the copy of the whole of `from` into `to`, of the same extent and
+// format: `from` in transfer-source layout, `to` in transfer-destination.
+void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to);
+
 }  // namespace tp::gpu

@@ -8,14 +8,15 @@ FrameTargets::FrameTargets(const gpu::Context& ctx, FrameGraph& graph, vk::Exten
                            bool sampledDepth)
     : color_(gpu::createImage2D(ctx, extent, kHdrFormat,
                                 vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
-                                    vk::ImageUsageFlagBits::eTransferSrc,
+                                    vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst,
                                 "HDR color target")),
-      depth_(gpu::createImage2D(ctx, extent, kDepthFormat,
-                                sampledDepth
-                                    ? vk::ImageUsageFlagBits::eDepthStencilAttachment |
-                                          vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferSrc
-                                    : vk::ImageUsageFlagBits::eDepthStencilAttachment,
-                                "depth target")),
+      // Every target is a transfer destination: each frame begins with the ground's copy (render/ground.hpp).
+      depth_(gpu::createImage2D(
+          ctx, extent, kDepthFormat,
+          sampledDepth ? vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eSampled |
+                             vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst
+                       : vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eTransferDst,
+          "depth target")),
       ldr_(gpu::createImage2D(ctx, extent, kLdrFormat,
                               vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc, "LDR preview")),
       hdrReadback_(ctx, graph, "color readback", vk::DeviceSize(extent.width) * extent.height * 16),
@@ -23,7 +24,8 @@ FrameTargets::FrameTargets(const gpu::Context& ctx, FrameGraph& graph, vk::Exten
   surfaces_.color = graph.image("color", color_);
   surfaces_.depth = graph.image("depth", depth_);
   if (gbuffer) {
-    const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage;
+    const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eStorage |
+                       vk::ImageUsageFlagBits::eTransferDst;
     normal_ = gpu::createImage2D(ctx, extent, kGbufferFormat, usage | vk::ImageUsageFlagBits::eTransferSrc,
                                  "G-buffer view normal");
     ambient_ = gpu::createImage2D(ctx, extent, kGbufferFormat, usage, "G-buffer ambient radiance");

@@ -1,6 +1,7 @@
 #include "render/ground.hpp"
 
 #include "gpu/commands.hpp"
+#include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/water_model.hpp"
@@ -26,10 +27,24 @@ FragmentNeeds unshadowedNeeds(FragmentNeeds surfaces) {
 
 }  // namespace
 
-Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds needs)
+Ground::Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
+               vk::Extent2D frame, bool gbuffer)
     : params_(groundParams(scene)),
       pipeline_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), groundNeeds(needs)))) {
+  const auto color = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc;
+  color_ = gpu::createImage2D(ctx, frame, kHdrFormat, color, "ground color");
+  depth_ = gpu::createImage2D(ctx, frame, kDepthFormat,
+                              vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eTransferSrc,
+                              "ground depth");
+  own_.color = graph.image("ground color", color_);
+  own_.depth = graph.image("ground depth", depth_);
+  if (gbuffer) {
+    normal_ = gpu::createImage2D(ctx, frame, kGbufferFormat, color, "ground view normal");
+    ambient_ = gpu::createImage2D(ctx, frame, kGbufferFormat, color, "ground ambient");
+    own_.normal = graph.image("ground view normal", normal_);
+    own_.ambient = graph.image("ground ambient", ambient_);
+  }
   if (needs.sphereShadows || needs.boxShadows) {
     unshadowed_.emplace(gpu::createGraphicsPipeline(
         ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), unshadowedNeeds(needs))));
@@ -38,16 +53,31 @@ Ground::Ground(const gpu::Context& ctx, const scene::Scene& scene, FragmentNeeds
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                      std::function<bool()> outOfObjectShadows) const {
-  graph.pass(passes::kGround, [this, targets, in, outOfObjectShadows](PassBuilder& pass) {
-    attachSurfaces(pass, targets, true);
-    Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
-    return [this, targets, &set, outOfObjectShadows](PassContext& pc) {
-      const gpu::Pipeline& pipeline = unshadowed_ && outOfObjectShadows() ? *unshadowed_ : pipeline_;
-      drawSurfaces(pc.cmd, targets, true, [&] {
-        gpu::bindPipeline(pc.cmd, pipeline, params_);
-        set.bind(pc.cmd, pipeline, pc.descriptors);
-        gpu::draw(pc.cmd, kGroundVertices);
-      });
+  graph.pass(passes::kGround,
+             [this, in, outOfObjectShadows](PassBuilder& pass) {
+               attachSurfaces(pass, own_, true);
+               Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+               return [this, &set, outOfObjectShadows](PassContext& pc) {
+                 const gpu::Pipeline& pipeline = unshadowed_ && outOfObjectShadows() ? *unshadowed_ : pipeline_;
+                 drawSurfaces(pc.cmd, own_, true, [&] {
+                   gpu::bindPipeline(pc.cmd, pipeline, params_);
+                   set.bind(pc.cmd, pipeline, pc.descriptors);
+                   gpu::draw(pc.cmd, kGroundVertices);
+                 });
+               };
+             },
+             {.cached = true, .runIf = {}});
+  graph.pass(passes::kGroundCopy, [this, targets](PassBuilder& pass) {
+    std::vector<std::pair<const gpu::Image*, const gpu::Image*>> copies;
+    auto copy = [&](const GraphImage& from, const GraphImage& to) {
+      if (from) copies.emplace_back(&pass.attach(from, Use::TransferRead), &pass.attach(to, Use::TransferWrite));
+    };
+    copy(own_.color, targets.color);
+    copy(own_.depth, targets.depth);
+    copy(own_.normal, targets.normal);
+    copy(own_.ambient, targets.ambient);
+    return [copies](PassContext& pc) {
+      for (const auto& [from, to] : copies) gpu::recordImageCopy(pc.cmd, *from, *to);
     };
   });
 }

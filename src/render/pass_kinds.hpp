@@ -11,6 +11,7 @@ inline constexpr PassKind kSky{"sky"};
 inline constexpr PassKind kGlossyPrefilter{"glossy prefilter"};
 inline constexpr PassKind kBackground{"background"};
 inline constexpr PassKind kGround{"ground"};
+inline constexpr PassKind kGroundCopy{"ground copy"};
 inline constexpr PassKind kPool{"pool"};
 inline constexpr PassKind kObjects{"objects"};
 inline constexpr PassKind kSsao{"ssao"};

@@ -74,7 +74,7 @@ struct Renderer::Resources {
         sky(ctx, graph, scene),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
-        ground(ctx, scene, needs) {
+        ground(ctx, graph, scene, needs, frame, targets.surfaces().gbuffer()) {
     graph.setCaching(skipping);
     const FrameInputs in{uniformsRef,        sky.image(),       glossy.image(), medium.buffer(),
                          *samplers.equirect, *samplers.nearest, *samplers.clamp};

@@ -74,13 +74,7 @@ void WaterSurface::declareUnderwater(FrameGraph& graph, const GraphImage& color)
   graph.pass(passes::kUnderwater, [this, color](PassBuilder& pass) {
     const gpu::Image& from = pass.attach(color, Use::TransferRead);
     const gpu::Image& to = pass.attach(*underwaterRef_, Use::TransferWrite);
-    return [&from, &to](PassContext& pc) {
-      pc.cmd.copyImage(from.handle(), vk::ImageLayout::eTransferSrcOptimal, to.handle(),
-                       vk::ImageLayout::eTransferDstOptimal,
-                       vk::ImageCopy{.srcSubresource = {from.aspect, 0, 0, 1},
-                                     .dstSubresource = {to.aspect, 0, 0, 1},
-                                     .extent = {from.extent.width, from.extent.height, 1}});
-    };
+    return [&from, &to](PassContext& pc) { gpu::recordImageCopy(pc.cmd, from, to); };
   });
 }
 
