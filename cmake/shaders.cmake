@@ -69,6 +69,8 @@ list(APPEND TIDEPOOL_SHADER_VARIANTS resolve.comp:TP_AO:resolve.ao.comp resolve.
 list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)
 # The floor's depth and normal alone (render/pool.cpp), without the G-buffer for frames without AO.
 list(APPEND TIDEPOOL_SHADER_VARIANTS pool_floor_depth.frag:TP_COLOR_ONLY:pool_floor_depth.color_only.frag)
+# The sky behind the ground (render/sky.cpp), without the G-buffer for frames without AO.
+list(APPEND TIDEPOOL_SHADER_VARIANTS sky_background.frag:TP_COLOR_ONLY:sky_background.color_only.frag)
 
 function(tidepool_compile_shaders)
   file(GLOB shader_sources CONFIGURE_DEPENDS

@@ -1,9 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The sky behind everything: the view ray through each pixel looks up the
-// equirectangular sky texture.
+// equirectangular sky texture. Drawn in the ground's pass, over its G-buffer
+// (TP_COLOR_ONLY: a frame without one), where it leaves no surface.
 #include "shared/frame.h"
 #include "shared/shading.h"
+#include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec2 ndc;
 layout(location = 0) out vec4 color;
@@ -14,4 +16,5 @@ void main() {
   vec4 far = frame.inverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 dir = normalize(far.xyz / far.w - frame.cameraPosition.xyz);
   color = vec4(texture(skyTexture, directionToEquirect(dir)).rgb, 1.0);
+  writeNoSurface();
 }

@@ -21,7 +21,7 @@ TEST(Cli, RenderWritesExrPngAndProfile) {
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors"), std::string::npos) << r.err;
   // The profile is of a frame after a first one (cached passes such as the
   // sky's do not run again), every pass timed by wall clock and by timestamps.
-  for (const char* pass : {"pass", "wall ms", "GPU ms", "background", "ground", "water", "resolve", "total"}) {
+  for (const char* pass : {"pass", "wall ms", "GPU ms", "ground", "water", "resolve", "total"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }
   EXPECT_EQ(r.out.find("n/a"), std::string::npos) << r.out;

@@ -193,12 +193,12 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   };
   // Frame 0 again and again: no steps to take, and the cached passes (sky,
   // caustics, the ground) ran on the first; the camera is away from the water
-  // (no camera medium). Each frame begins with the ground's copy. The sky's
-  // background after the opaque surfaces, where they left the far plane. The
-  // AO made on the first frame only: nothing opaque moves. The water
-  // deferred: its G-buffer, tiles, shading and the side seen from below. The
-  // AO, the haze and the tonemap in the resolve, which runs for either image.
-  const std::vector<std::string> opaque{"ground copy", "pool",  "objects",     "background", "water g-buffer",
+  // (no camera medium). Each frame begins with the ground's copy; the sky
+  // behind everything is drawn in the ground's pass. The AO made on the
+  // first frame only: nothing opaque moves. The water deferred: its
+  // G-buffer, tiles, shading and the side seen from below. The AO, the haze
+  // and the tonemap in the resolve, which runs for either image.
+  const std::vector<std::string> opaque{"ground copy", "pool",  "objects",     "water g-buffer",
                                         "water tiles", "water", "water below", "resolve"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
@@ -206,9 +206,9 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
     return all;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  const std::vector<std::string> first{
-      "caustics",  "sky",       "ground",         "ground copy", "pool",  "objects",     "background", "ssao",
-      "ao blur x", "ao blur y", "water g-buffer", "water tiles", "water", "water below", "resolve",    "readback hdr"};
+  const std::vector<std::string> first{"caustics",    "sky",   "ground",      "ground copy", "pool",
+                                       "objects",     "ssao",  "ao blur x",   "ao blur y",   "water g-buffer",
+                                       "water tiles", "water", "water below", "resolve",     "readback hdr"};
   EXPECT_EQ(names(hdrOnly), first);
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});
@@ -227,16 +227,14 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   dry.water.enabled = false;
   dry.ao.enabled = false;
   render::Renderer dryRenderer(ctx(), dry, 64, 48);
-  EXPECT_EQ(
-      names(dryRenderer.render({.hdr = true})),
-      (std::vector<std::string>{"sky", "ground", "ground copy", "objects", "background", "resolve", "readback hdr"}));
+  EXPECT_EQ(names(dryRenderer.render({.hdr = true})),
+            (std::vector<std::string>{"sky", "ground", "ground copy", "objects", "resolve", "readback hdr"}));
   dry.ao = scene::Ao{};
   dry.ao.resolution = "half";
   dry.ao.blur = "off";
   render::Renderer halfRenderer(ctx(), dry, 64, 48);
   EXPECT_EQ(names(halfRenderer.render({.hdr = true})),
-            (std::vector<std::string>{"sky", "ground", "ground copy", "objects", "background", "ssao", "resolve",
-                                      "readback hdr"}));
+            (std::vector<std::string>{"sky", "ground", "ground copy", "objects", "ssao", "resolve", "readback hdr"}));
   const auto withAo = halfRenderer.render({.hdr = true, .ao = true});
   EXPECT_NE(render::findPass(withAo.passes, render::passes::kAoUpsample), nullptr);
 }

@@ -24,4 +24,13 @@ void writeGbuffer(FrameUniforms frame, vec3 worldNormal, vec3 ambientRadiance) {
 #endif
 }
 
+// Where no surface is (the sky): what the surfaces' first pass clears the
+// G-buffer to, written by a pass that draws over that clear.
+void writeNoSurface() {
+#ifndef TP_COLOR_ONLY
+  gbufferNormal = vec4(0.0);
+  gbufferAmbient = vec4(0.0);
+#endif
+}
+
 #endif

@@ -52,17 +52,20 @@ Ground::Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& s
 }
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-                     std::function<bool()> outOfObjectShadows) const {
+                     std::function<bool()> outOfObjectShadows,
+                     const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky) const {
   graph.pass(passes::kGround,
-             [this, in, outOfObjectShadows](PassBuilder& pass) {
+             [this, in, outOfObjectShadows, &sky](PassBuilder& pass) {
                attachSurfaces(pass, own_, true);
                Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
-               return [this, &set, outOfObjectShadows](PassContext& pc) {
+               auto drawSky = sky(pass);
+               return [this, &set, outOfObjectShadows, drawSky](PassContext& pc) {
                  const gpu::Pipeline& pipeline = unshadowed_ && outOfObjectShadows() ? *unshadowed_ : pipeline_;
                  drawSurfaces(pc.cmd, own_, true, [&] {
                    gpu::bindPipeline(pc.cmd, pipeline, params_);
                    set.bind(pc.cmd, pipeline, pc.descriptors);
                    gpu::draw(pc.cmd, kGroundVertices);
+                   drawSky(pc);
                  });
                };
              },

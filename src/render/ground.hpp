@@ -1,10 +1,12 @@
 #pragma once
 // The checkered ground plane around the pool's hole, depth tested; the first
-// surface. It is drawn into images of its own, cleared, in a cached pass: it
-// reads nothing but the frame's uniforms (the camera, the sun and sky, the
-// shadows' casters), so a frame whose uniforms did not change keeps it. Each
-// frame then begins with their copy into the frame's targets, which the other
-// surfaces draw over.
+// surface. It is drawn into images of its own, cleared, with the sky behind
+// it, in a cached pass: the two read nothing but the frame's uniforms (the
+// camera, the sun and sky, the shadows' casters) and the sky's texture, so a
+// frame where these did not change keeps them. Each frame then begins with
+// their copy into the frame's targets, which the other surfaces draw over:
+// the sky drawn where they will be is drawn over, and where they leave the
+// far plane it is what the frame shows, as if drawn after them.
 #include <functional>
 #include <optional>
 
@@ -22,11 +24,13 @@ class Ground {
   Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs, vk::Extent2D frame,
          bool gbuffer);
   const shader::GroundParams& params() const { return params_; }
-  // The ground's pass and its copy into `targets`. `outOfObjectShadows`,
-  // asked as each frame records: no sphere's or box's shadow can fall on the
-  // ground (groundOutOfObjectShadows), so it draws without their code.
+  // The ground's pass, with `sky` (Sky::background) drawn after the ground
+  // in it, and its copy into `targets`. `outOfObjectShadows`, asked as each
+  // frame records: no sphere's or box's shadow can fall on the ground
+  // (groundOutOfObjectShadows), so it draws without their code.
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-               std::function<bool()> outOfObjectShadows) const;
+               std::function<bool()> outOfObjectShadows,
+               const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky) const;
 
  private:
   shader::GroundParams params_;

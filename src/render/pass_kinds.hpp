@@ -9,7 +9,6 @@ inline constexpr PassKind kCameraMedium{"camera medium"};
 inline constexpr PassKind kCaustics{"caustics"};
 inline constexpr PassKind kSky{"sky"};
 inline constexpr PassKind kGlossyPrefilter{"glossy prefilter"};
-inline constexpr PassKind kBackground{"background"};
 inline constexpr PassKind kGround{"ground"};
 inline constexpr PassKind kGroundCopy{"ground copy"};
 inline constexpr PassKind kPool{"pool"};

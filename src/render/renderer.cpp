@@ -71,7 +71,7 @@ struct Renderer::Resources {
         targets(ctx, graph, frame, scene.ao.enabled || !options.skipping,
                 scene.ao.enabled || scene.render.antialiasing == "morphological" || scene.sky.hazeDistance > 0.0f),
         needs(surfaceNeeds(scene, targets.surfaces().gbuffer(), options.skipping)),
-        sky(ctx, graph, scene),
+        sky(ctx, graph, scene, targets.surfaces().gbuffer()),
         glossy(ctx, graph, scene, *sky.image().image),
         medium(ctx, graph, scene.water.enabled),
         ground(ctx, graph, scene, needs, frame, targets.surfaces().gbuffer()) {
@@ -82,11 +82,14 @@ struct Renderer::Resources {
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
-    ground.declare(graph, surfaces, in, [this] {
-      const auto& u = *static_cast<const shader::FrameUniforms*>(uniforms.mapped);
-      return skipping && groundOutOfObjectShadows(u.shadows, glm::vec3(u.sunDirection), ground.params().plane.y,
-                                                  ground.params().plane.w);
-    });
+    ground.declare(
+        graph, surfaces, in,
+        [this] {
+          const auto& u = *static_cast<const shader::FrameUniforms*>(uniforms.mapped);
+          return skipping && groundOutOfObjectShadows(u.shadows, glm::vec3(u.sunDirection), ground.params().plane.y,
+                                                      ground.params().plane.w);
+        },
+        [this, in](PassBuilder& pass) { return sky.background(pass, in); });
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
         if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
@@ -102,8 +105,6 @@ struct Renderer::Resources {
       objects.emplace(ctx, needs, *poolDraw);
       objects->declare(graph, surfaces, in, opaqueInView);
     }
-    // The sky where no opaque surface is (their depth test leaves the rest out).
-    sky.declareBackground(graph, surfaces, in);
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too. Applied here, or by the resolve.
     if (scene.ao.enabled) {

@@ -6,13 +6,15 @@
 
 namespace tp::render {
 
-Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene)
+Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
     // At the far plane, tested against the surfaces' depth and not writing it.
-    : background_(gpu::createGraphicsPipeline(ctx, {.vertexShader = "fullscreen.vert",
-                                                    .fragmentShader = "sky_background.frag",
-                                                    .colorFormats = {kHdrFormat},
-                                                    .depthFormat = kDepthFormat,
-                                                    .depthTest = true})) {
+    : background_(gpu::createGraphicsPipeline(
+          ctx,
+          {.vertexShader = "fullscreen.vert",
+           .fragmentShader = gbuffer ? "sky_background.frag" : "sky_background.color_only.frag",
+           .colorFormats = gbuffer ? std::vector{kHdrFormat, kGbufferFormat, kGbufferFormat} : std::vector{kHdrFormat},
+           .depthFormat = kDepthFormat,
+           .depthTest = true})) {
   if (!scene.sky.image.empty()) {
     const SkyImage image = loadSkyImage(scene.sky);
     image_ = uploadSkyImage(ctx, image);
@@ -42,21 +44,15 @@ void Sky::declareSky(FrameGraph& graph) const {
              {.cached = true, .runIf = {}});
 }
 
-void Sky::declareBackground(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const {
-  graph.pass(passes::kBackground, [this, surfaces, in](PassBuilder& pass) {
-    Bindings& set = pass.bindings()
-                        .uniformBuffer(0, in.uniforms, Use::HostData)
-                        .sampledImage(1, in.sky, in.equirect, Use::FragmentSample);
-    const gpu::Image& color = pass.attach(surfaces.color, Use::ColorReadWrite);
-    const gpu::Image& depth = pass.attach(surfaces.depth, Use::DepthReadWrite);
-    return [this, &set, &color, &depth](PassContext& pc) {
-      drawOver(pc.cmd, color, depth, [&] {
-        pc.cmd.bindPipeline(background_.bindPoint, *background_.pipeline);
-        set.bind(pc.cmd, background_, pc.descriptors);
-        gpu::draw(pc.cmd, 3);
-      });
-    };
-  });
+std::function<void(PassContext&)> Sky::background(PassBuilder& pass, const FrameInputs& in) const {
+  Bindings& set = pass.bindings()
+                      .uniformBuffer(0, in.uniforms, Use::HostData)
+                      .sampledImage(1, in.sky, in.equirect, Use::FragmentSample);
+  return [this, &set](PassContext& pc) {
+    pc.cmd.bindPipeline(background_.bindPoint, *background_.pipeline);
+    set.bind(pc.cmd, background_, pc.descriptors);
+    gpu::draw(pc.cmd, 3);
+  };
 }
 
 }  // namespace tp::render

@@ -1,7 +1,9 @@
 #pragma once
 // The sky: the procedural one, filled by a compute pass on the first frame
 // (cached: its parameters are fixed), or an image, uploaded once (then no
-// pass at all); and the background pass that shows it behind everything.
+// pass at all); and the background that shows it behind everything, drawn
+// in the ground's pass.
+#include <functional>
 #include <optional>
 
 #include "render/surfaces.hpp"
@@ -13,16 +15,20 @@ namespace tp::render {
 
 class Sky {
  public:
-  Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene);
+  // `gbuffer`: the surfaces' targets have the G-buffer.
+  Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer);
   GraphImage image() const { return ref_; }
   // What lights the scene: the sun and the sky's SH9.
   const SkyLight& light() const { return light_; }
   // The procedural sky's pass; nothing for a sky image.
   void declareSky(FrameGraph& graph) const;
-  // The sky behind everything, seen through each pixel's view ray, drawn
-  // after the opaque surfaces where their depth left the far plane: the
-  // depth test before the shader leaves out the pixels they cover.
-  void declareBackground(FrameGraph& graph, const SurfaceTargets& surfaces, const FrameInputs& in) const;
+  // The sky behind everything, seen through each pixel's view ray: declares
+  // what it reads in `pass`, and returns what draws it in that pass's
+  // rendering, after the surfaces drawn there, where their depth left the
+  // far plane (the depth test before the shader leaves out the pixels they
+  // cover). Its colour and the G-buffer's clear (lib/gbuffer.glsl's
+  // writeNoSurface); no depth.
+  std::function<void(PassContext&)> background(PassBuilder& pass, const FrameInputs& in) const;
 
  private:
   gpu::Image image_;
