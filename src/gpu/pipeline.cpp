@@ -130,16 +130,18 @@ Pipeline createGraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& 
                                                 .depthWriteEnable = desc.depthWrite,
                                                 .depthCompareOp = vk::CompareOp::eLessOrEqual};
   std::vector<vk::PipelineColorBlendAttachmentState> blends(
-      desc.colorFormats.size(), vk::PipelineColorBlendAttachmentState{
-                                    .blendEnable = desc.additive ? VK_TRUE : VK_FALSE,
-                                    .srcColorBlendFactor = vk::BlendFactor::eOne,
-                                    .dstColorBlendFactor = vk::BlendFactor::eOne,
-                                    .colorBlendOp = vk::BlendOp::eAdd,
-                                    .srcAlphaBlendFactor = vk::BlendFactor::eOne,
-                                    .dstAlphaBlendFactor = vk::BlendFactor::eOne,
-                                    .alphaBlendOp = vk::BlendOp::eAdd,
-                                    .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-                                                      vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA});
+      desc.colorFormats.size(),
+      vk::PipelineColorBlendAttachmentState{
+          .blendEnable = desc.additive ? VK_TRUE : VK_FALSE,
+          .srcColorBlendFactor = vk::BlendFactor::eOne,
+          .dstColorBlendFactor = vk::BlendFactor::eOne,
+          .colorBlendOp = vk::BlendOp::eAdd,
+          .srcAlphaBlendFactor = vk::BlendFactor::eOne,
+          .dstAlphaBlendFactor = vk::BlendFactor::eOne,
+          .alphaBlendOp = vk::BlendOp::eAdd,
+          .colorWriteMask = desc.colorWrites ? vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                                                   vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA
+                                             : vk::ColorComponentFlags{}});
   vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = uint32_t(blends.size()),
                                               .pAttachments = blends.data()};
   vk::DynamicState dynamicStates[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};

@@ -66,6 +66,7 @@ struct GraphicsPipelineDesc {
   vk::PrimitiveTopology topology = vk::PrimitiveTopology::eTriangleList;
   vk::CullModeFlags cullMode = vk::CullModeFlagBits::eNone;
   bool additive = false;                       // blend: destination + source (accumulating targets)
+  bool colorWrites = true;                     // false: the colour targets are left as they are (depth alone)
   Specialization fragmentSpecialization = {};  // the fragment shader's specialization constants
 };
 

@@ -20,7 +20,13 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
           ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))),
       // No light, so no variants but with and without the G-buffer.
       floorDepth_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_floor.vert", "pool_floor_depth.frag",
-                                                                  sizeof(glm::uvec4), {.gbuffer = needs.gbuffer}))) {
+                                                                  sizeof(glm::uvec4), {.gbuffer = needs.gbuffer}))),
+      cover_(gpu::createGraphicsPipeline(ctx, [&] {
+        gpu::GraphicsPipelineDesc desc =
+            opaquePipeline("pool_cover.vert", "pool_floor_depth.frag", sizeof(glm::vec4), {.gbuffer = needs.gbuffer});
+        desc.colorWrites = false;
+        return desc;
+      }())) {
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
   floorTop_ = pool.terrain.w;
@@ -71,8 +77,8 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
 }
 
 void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-                   std::function<Floor()> floor) const {
-  graph.pass(passes::kPool, [this, targets, in, floor](PassBuilder& pass) {
+                   std::function<Drawn()> drawn) const {
+  graph.pass(passes::kPool, [this, targets, in, drawn](PassBuilder& pass) {
     attachSurfaces(pass, targets, false);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
@@ -81,13 +87,19 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
                         .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
                         .constantStorageBuffer(5, floorVertices_);
-    return [this, targets, &set, floor](PassContext& pc) {
-      const Floor how = floor();
-      const gpu::Pipeline* floorPipeline = how == Floor::Lit              ? &floor_
-                                           : how == Floor::DepthAndNormal ? &floorDepth_
-                                                                          : nullptr;
-      drawSurfaces(pc.cmd, targets, false,
-                   [&] { drawPool(pc.cmd, pc.descriptors, walls_, floorPipeline, set, draw_); });
+    return [this, targets, &set, drawn](PassContext& pc) {
+      const Drawn how = drawn();
+      const gpu::Pipeline* floorPipeline = how.floor == Floor::Lit              ? &floor_
+                                           : how.floor == Floor::DepthAndNormal ? &floorDepth_
+                                                                                : nullptr;
+      drawSurfaces(pc.cmd, targets, false, [&] {
+        if (how.coverAt) {
+          gpu::bindPipeline(pc.cmd, cover_, glm::vec4(*how.coverAt, 0.0f, 0.0f, 0.0f));
+          set.bind(pc.cmd, cover_, pc.descriptors);
+          gpu::draw(pc.cmd, kCoverVertices);
+        }
+        drawPool(pc.cmd, pc.descriptors, walls_, floorPipeline, set, draw_);
+      });
     };
   });
 }

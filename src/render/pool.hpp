@@ -15,6 +15,7 @@ namespace tp::render {
 
 constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
 constexpr uint32_t kWallVertices = 24;                                   // pool_walls.vert: four quads
+constexpr uint32_t kCoverVertices = 6;                                   // pool_cover.vert: one quad
 
 // What other passes need of the pool: its uniforms, the objects the rays
 // cast in shaders meet (the renderer's, filled before each frame), the floor
@@ -43,9 +44,18 @@ class Pool {
                      // the SSAO: its depth and normal alone (pool_floor_depth.frag)
     None,            // seen only through the water, and read by nothing
   };
-  // `floor` is asked as each frame records.
+  // How the pool is drawn in a frame: its floor, and where the camera sees
+  // everything in the pool through the water below a height, and nothing
+  // reads the depth there but the water, a level square at that height,
+  // drawn first into the depth alone (pool_cover.vert), so that the depth
+  // test leaves out the walls and objects under it.
+  struct Drawn {
+    Floor floor;
+    std::optional<float> coverAt;
+  };
+  // `drawn` is asked as each frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-               std::function<Floor()> floor) const;
+               std::function<Drawn()> drawn) const;
   // The floor's highest point, in metres.
   float floorTop() const { return floorTop_; }
   // The step the floor grid is drawn at from the next frame on
@@ -57,7 +67,7 @@ class Pool {
   GridMesh floorMesh_;
   gpu::Image caustics_;
   PoolDraw draw_;
-  gpu::Pipeline walls_, floor_, floorDepth_;
+  gpu::Pipeline walls_, floor_, floorDepth_, cover_;
   float floorTop_ = 0.0f;
   std::optional<gpu::Pipeline> causticsPipeline_;
 };

@@ -93,9 +93,10 @@ struct Renderer::Resources {
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
         if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
-          return Pool::Floor::Lit;
-        // Nothing else reads the depth the water draws over.
-        return aoMakesItsInputs() ? Pool::Floor::DepthAndNormal : Pool::Floor::None;
+          return Pool::Drawn{Pool::Floor::Lit, std::nullopt};
+        // Nothing but the SSAO reads the depth and normals the water draws over.
+        if (aoMakesItsInputs()) return Pool::Drawn{Pool::Floor::DepthAndNormal, std::nullopt};
+        return Pool::Drawn{Pool::Floor::None, seenOnlyThroughWaterBelow(live, water->largestHeight())};
       });
     }
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))

@@ -1,6 +1,7 @@
 #include "shading/water_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "shading/objects_model.hpp"
@@ -159,6 +160,28 @@ bool cameraOverWater(const scene::Scene& scene) {
 
 bool apparentRefraction(const scene::Scene& scene) { return scene.render.refraction == "apparent"; }
 
+namespace {
+
+// The slots between the water's mesh and the walls, half a cell wide, and
+// the camera's distance across each wall's plane to the near side of its slot.
+struct Slots {
+  float width;
+  std::array<float, 4> across;
+};
+
+Slots slotsFrom(const scene::Scene& scene) {
+  const glm::vec3 c = scene.camera.position;
+  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+  const float slot = 0.5f * p.placement.w, size = float(p.grid.x) * p.placement.w;
+  const float walls[] = {c.x - p.placement.x, c.x - (p.placement.x + size), c.z - p.placement.z,
+                         c.z - (p.placement.z + size)};
+  Slots slots{slot, {}};
+  for (size_t w = 0; w < 4; ++w) slots.across[w] = std::abs(walls[w]) - slot;
+  return slots;
+}
+
+}  // namespace
+
 bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop) {
   const glm::vec3 c = scene.camera.position;
   // Under the rim, away from the water, the camera is under the ground.
@@ -169,18 +192,22 @@ bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, floa
   // the water down to the floor before it meets the wall.
   const float drop = std::min(scene.ground.height - highest, lowest - floorTop);
   if (!(drop > 0.0f)) return false;
-  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
-  const float slot = 0.5f * p.placement.w, size = float(p.grid.x) * p.placement.w;
-  const float walls[] = {c.x - p.placement.x, c.x - (p.placement.x + size), c.z - p.placement.z,
-                         c.z - (p.placement.z + size)};
   // A line from the camera reaches a wall's slot at the water (no lower than
   // its lowest) no steeper, across the wall, than the camera's height over
   // the water by its distance from the slot.
-  for (float toWall : walls) {
-    const float across = std::abs(toWall) - slot;
-    if (!(across > 0.0f) || (c.y - lowest) * slot >= drop * across) return false;
+  const Slots slots = slotsFrom(scene);
+  for (float across : slots.across) {
+    if (!(across > 0.0f) || (c.y - lowest) * slots.width >= drop * across) return false;
   }
   return true;
+}
+
+float seenOnlyThroughWaterBelow(const scene::Scene& scene, float waveHeight) {
+  const float lowest = scene.water.level - waveHeight;
+  const Slots slots = slotsFrom(scene);
+  float reach = 0.0f;
+  for (float across : slots.across) reach = std::max(reach, (scene.camera.position.y - lowest) * slots.width / across);
+  return lowest - 2.0f * reach;
 }
 
 bool hasWaterScattering(const scene::Scene& scene) {

@@ -47,6 +47,14 @@ bool apparentRefraction(const scene::Scene& scene);
 // water's mesh and a wall (the mesh spans the cells' centres, half a cell
 // short of the walls).
 bool floorSeenOnlyThroughWater(const scene::Scene& scene, float waveHeight, float floorTop);
+// Where the floor is seen only through the water: a height in the pool below
+// which the camera sees everything through the water too. Below the lowest
+// water, a line from the camera meets a wall directly only through that
+// wall's slot, which it crosses no steeper than it reaches it: it goes no
+// lower than the lowest water less the slot's width times that slope. The
+// height is twice that reach below the lowest water, so no such line meets
+// it.
+float seenOnlyThroughWaterBelow(const scene::Scene& scene, float waveHeight);
 
 // The medium around the camera given the water's state (none: air), as
 // camera_medium.comp decides it on the GPU.
