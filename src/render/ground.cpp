@@ -32,16 +32,17 @@ Ground::Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& s
     : params_(groundParams(scene)),
       pipeline_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), groundNeeds(needs)))) {
-  const auto color = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc;
-  color_ = gpu::createImage2D(ctx, frame, kHdrFormat, color, "ground color");
+  // Drawn into, then copied from.
+  const auto usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc;
+  color_ = gpu::createImage2D(ctx, frame, kHdrFormat, usage, "ground color");
   depth_ = gpu::createImage2D(ctx, frame, kDepthFormat,
                               vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eTransferSrc,
                               "ground depth");
   own_.color = graph.image("ground color", color_);
   own_.depth = graph.image("ground depth", depth_);
   if (gbuffer) {
-    normal_ = gpu::createImage2D(ctx, frame, kGbufferFormat, color, "ground view normal");
-    ambient_ = gpu::createImage2D(ctx, frame, kGbufferFormat, color, "ground ambient");
+    normal_ = gpu::createImage2D(ctx, frame, kGbufferFormat, usage, "ground view normal");
+    ambient_ = gpu::createImage2D(ctx, frame, kGbufferFormat, usage, "ground ambient");
     own_.normal = graph.image("ground view normal", normal_);
     own_.ambient = graph.image("ground ambient", ambient_);
   }
