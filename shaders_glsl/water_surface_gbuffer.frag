@@ -9,6 +9,10 @@
 #include "shared/frame.h"
 #include "shared/water_surface.h"
 
+// The depth test before the shader, as for a shader without the tiles'
+// store: lavapipe then leaves out the blocks the pool's rim and the objects
+// hide, and only the tiles with a fragment seen are tagged.
+layout(early_fragment_tests) in;
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 layout(binding = 9) writeonly buffer TileTags { uint tileTags[]; };
