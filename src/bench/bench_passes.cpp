@@ -29,8 +29,7 @@ struct Measured {
 // render --frames moves it: a still camera's frame keeps what a moving
 // camera's draws again (the SSAO).
 render::RenderedFrame renderAt(render::Renderer& renderer, const scene::Scene& s, render::FrameRequest request) {
-  if (scene::isAnimated(s.camera))
-    renderer.setCamera(scene::cameraAt(s.camera, float(request.frame) * s.water.frameTime));
+  if (scene::isAnimated(s.camera)) renderer.setCamera(scene::cameraAtFrame(s, request.frame));
   return renderer.render(request);
 }
 

@@ -183,7 +183,7 @@ int runRender(const RenderOptions& options) {
   }
   // The camera where its path or turntable puts it at this frame's time.
   scene::Scene scene = loadScene(o.scene);
-  scene.camera = scene::cameraAt(scene.camera, float(o.frame) * scene.water.frameTime);
+  scene.camera = scene::cameraAtFrame(scene, o.frame);
   RasterPlan plan = rasterPlan(o, scene);
   GpuSession session(o.validate, o.device);
   render::RenderedFrame frame;

@@ -102,8 +102,7 @@ int runRenderSequence(const RenderOptions& o) {
     for (const uint32_t f : todo) {
       if (InterruptGuard::received()) break;
       plan.request.frame = f;
-      if (scene::isAnimated(scene.camera))
-        renderer.setCamera(scene::cameraAt(scene.camera, float(f) * scene.water.frameTime));
+      if (scene::isAnimated(scene.camera)) renderer.setCamera(scene::cameraAtFrame(scene, f));
       auto frame = std::make_shared<const render::RenderedFrame>(
           renderSamples(renderer, plan.request, rasterSamples(o), o.transparentSky));
       std::optional<sim::WaterCheckpoint> checkpoint;

@@ -20,6 +20,7 @@ class GridMesh {
   uint32_t vertices() const { return vertices_; }
   // Returns whether it changed. `step`: 1, 2 or 4.
   bool setStep(uint32_t step);
+  uint32_t step() const { return 1u << level_; }
   // Binds the step's indices and draws them; the pipeline is bound.
   void draw(const vk::raii::CommandBuffer& cmd) const;
 

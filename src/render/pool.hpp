@@ -61,6 +61,7 @@ class Pool {
   // The step the floor grid is drawn at from the next frame on
   // (shading/grid_detail.hpp); returns whether it changed.
   bool setFloorStep(uint32_t step) { return floorMesh_.setStep(step); }
+  uint32_t floorStep() const { return floorMesh_.step(); }
 
  private:
   gpu::Buffer uniforms_, floorVertices_;

@@ -110,7 +110,7 @@ struct Renderer::Resources {
     // copy of the pool then has it too. Applied here, or by the resolve.
     if (scene.ao.enabled) {
       ao.emplace(ctx, graph, scene.ao, frame, aoAfterWater(scene, skipping));
-      ao->declare(graph, surfaces, in, [this] { return !skipping || aoGeometry != geometry; });
+      ao->declare(graph, surfaces, in, [this] { return opaqueSurfacesMayHaveChanged(); });
     }
     if (waterSurface) waterSurface->declareUnderwater(graph, surfaces.color);
     // Glass after AO (it neither occludes nor is occluded) and after the
@@ -203,13 +203,16 @@ struct Renderer::Resources {
     if (waterSurface->setGridStep(step(scene.water.level, scene.water.grid))) {
       for (ResourceRef state : waterSurface->draw().state.refs) graph.touch(state);
     }
-    floorStep = step(scene.ground.height - scene.pool.depth, kPoolFloorGrid);
-    pool->setFloorStep(floorStep);
+    pool->setFloorStep(step(scene.ground.height - scene.pool.depth, kPoolFloorGrid));
   }
 
+  // Whether the opaque surfaces' depth and normals may differ from those the
+  // SSAO last ran on (or nothing is skipped): the SSAO runs again.
+  bool opaqueSurfacesMayHaveChanged() const { return !skipping || aoGeometry != geometry; }
+
   // Whether this frame's opaque surfaces must give the SSAO its depth and
-  // normals: it runs (they may have changed), or the frame reads them back.
-  bool aoMakesItsInputs() const { return ao && (!skipping || aoGeometry != geometry || aoReadback); }
+  // normals: it runs, or the frame reads them back.
+  bool aoMakesItsInputs() const { return ao && (opaqueSurfacesMayHaveChanged() || aoReadback); }
 
   // The readbacks a request asks for: their passes, and those they depend on, record.
   std::vector<ResourceRef> requestedOutputs(const FrameRequest& request) const {
@@ -279,7 +282,6 @@ struct Renderer::Resources {
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
   std::vector<shader::GlassSphereParams> glassInView;
   bool mediumMayNotBeAir = false;            // the camera medium pass last ran with the camera over the water
-  uint32_t floorStep = 1;                    // the pool floor grid's, set by setGridSteps
   OpaqueGeometry geometry;                   // the frame being recorded's
   std::optional<OpaqueGeometry> aoGeometry;  // the frame's where the SSAO last ran
   bool aoReadback = false;                   // the frame being recorded reads back the AO and its G-buffer
@@ -411,7 +413,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }
   // Spheres with a path are where the path puts them at this frame's time.
   res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
-  res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->floorStep);
+  res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->pool ? res_->pool->floorStep() : 1u);
   res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
   res_->resolve->setWanted(request.hdr, request.ldr || request.present);

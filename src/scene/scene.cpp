@@ -75,6 +75,10 @@ Scene sceneAt(const Scene& scene, float t) {
   return placed;
 }
 
+Camera cameraAtFrame(const Scene& scene, uint32_t frame) {
+  return cameraAt(scene.camera, float(frame) * scene.water.frameTime);
+}
+
 glm::vec3 sphereCenterAt(const Sphere& sphere, float t) {
   const auto& path = sphere.path;
   if (path.empty()) return sphere.center;

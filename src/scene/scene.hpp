@@ -274,6 +274,10 @@ Scene defaultScene();
 // where its path puts it.
 Scene sceneAt(const Scene& scene, float t);
 
+// The camera as it stands at frame `frame`, whose time is `frame` water
+// frame times (cameraAt).
+Camera cameraAtFrame(const Scene& scene, uint32_t frame);
+
 // Whether any of the scene's spheres is glass.
 inline bool hasGlass(const Scene& scene) { return std::any_of(scene.spheres.begin(), scene.spheres.end(), isGlass); }
 
