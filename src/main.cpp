@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/heap_settings.hpp"
 #include "bench/bench_command.hpp"
 #include "cli/build_version.hpp"
 #include "cli/command_help.hpp"
@@ -17,6 +18,7 @@
 #include "viewer/view_command.hpp"
 
 int main(int argc, char** argv) {
+  tp::base::keepFreedHeapMemory();
   CLI::App app{"tidepool: a Vulkan renderer of an interactive water scene", "tidepool"};
   app.set_version_flag("--version", tp::app::versionText(), "Print the version and the git commit built from");
   app.require_subcommand(1);

@@ -13,7 +13,7 @@
 
 namespace tp::render {
 
-constexpr vk::Format kCausticsFormat = vk::Format::eR16G16B16A16Sfloat;  // the sky's format: blendable, sampled
+constexpr vk::Format kCausticsFormat = vk::Format::eR16Sfloat;
 constexpr uint32_t kWallVertices = 24;                                   // pool_walls.vert: four quads
 constexpr uint32_t kCoverVertices = 6;                                   // pool_cover.vert: one quad
 
