@@ -13,9 +13,11 @@
 
 namespace tp::render {
 
+// The caustics hold one value a texel: a format every device must blend and
+// sample linearly.
 constexpr vk::Format kCausticsFormat = vk::Format::eR16Sfloat;
-constexpr uint32_t kWallVertices = 24;                                   // pool_walls.vert: four quads
-constexpr uint32_t kCoverVertices = 6;                                   // pool_cover.vert: one quad
+constexpr uint32_t kWallVertices = 24;  // pool_walls.vert: four quads
+constexpr uint32_t kCoverVertices = 6;  // pool_cover.vert: one quad
 
 // What other passes need of the pool: its uniforms, the objects the rays
 // cast in shaders meet (the renderer's, filled before each frame), the floor
