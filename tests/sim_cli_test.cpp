@@ -202,6 +202,12 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   for (const char* pass : {"ground ", "ssao", "ao blur y"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }
+  // The viewer's frame reads nothing back: the same passes less the readback.
+  r = runTidepool("bench passes --validate --size 32x16 --frames 2 --shown --csv " + csv + " --plot ''", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(csvShape(csv).rows, 10);
+  EXPECT_EQ(r.out.find("readback"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("resolve"), std::string::npos) << r.out;
   ScratchDir bad;
   for (const char* sizes : {"48", "48x32,0x32", "5000x10"}) {
     const std::string error =

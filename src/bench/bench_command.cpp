@@ -146,6 +146,9 @@ void addPassesBench(CLI::App* bench, BenchPassesOptions& o) {
   passes->add_option("--frames", o.frames, "Timed frames of each kind (whole, pass by pass) per resolution")
       ->capture_default_str()
       ->check(inRange(1u, 100000u));
+  passes->add_flag("--shown", o.shown,
+                   "Time the frame the viewer shows rather than the one render writes: no HDR readback, and the "
+                   "resolve stores no HDR colour");
   addOutputOptions(passes, o.csv, o.plot);
   addGpuOptions(passes, o.validate, o.device);
 }

@@ -33,20 +33,26 @@ render::RenderedFrame renderAt(render::Renderer& renderer, const scene::Scene& s
   return renderer.render(request);
 }
 
-Measured measure(const gpu::Context& ctx, const scene::Scene& s, const Resolution& r, uint32_t frames) {
+// The frame `render` writes (its HDR colour read back), or with `shown` the
+// one the viewer shows (the tonemapped image left on the GPU).
+render::FrameRequest requestFor(uint32_t frame, bool shown, bool passWallTimes) {
+  return {.frame = frame, .hdr = !shown, .passWallTimes = passWallTimes, .present = shown};
+}
+
+Measured measure(const gpu::Context& ctx, const scene::Scene& s, const Resolution& r, uint32_t frames, bool shown) {
   render::Renderer renderer(ctx, s, r.width, r.height);
-  renderAt(renderer, s, {.frame = 0});  // pipelines compiled, cached passes filled
+  renderAt(renderer, s, requestFor(0, shown, false));  // pipelines compiled, cached passes filled
   Measured m;
   std::vector<double> frameMs;
   uint32_t frame = 1;
   for (uint32_t k = 0; k < frames; ++k, ++frame) {
     const auto start = std::chrono::steady_clock::now();
-    renderAt(renderer, s, {.frame = frame});
+    renderAt(renderer, s, requestFor(frame, shown, false));
     frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   m.frameMs = median(frameMs);
   for (uint32_t k = 0; k < frames; ++k, ++frame) {
-    for (const auto& pass : renderAt(renderer, s, {.frame = frame, .passWallTimes = true}).passes) {
+    for (const auto& pass : renderAt(renderer, s, requestFor(frame, shown, true)).passes) {
       if (!m.passes.count(pass.name)) m.order.push_back(pass.name);
       m.passes[pass.name].wall.push_back(pass.wallMilliseconds);
       m.passes[pass.name].gpu.push_back(pass.milliseconds);
@@ -72,7 +78,7 @@ int runBenchPasses(const BenchPassesOptions& o) {
   std::printf("%-10s %-20s %9s %9s %5s\n", "size", "pass", "wall ms", "GPU ms", "runs");
   for (const Resolution& r : resolutions) {
     std::fprintf(stderr, "bench passes: %ux%u\n", r.width, r.height);
-    const Measured m = measure(ctx, s, r, o.frames);
+    const Measured m = measure(ctx, s, r, o.frames, o.shown);
     const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
     const double fps = 1000.0 / m.frameMs;
     for (const std::string& name : m.order) {

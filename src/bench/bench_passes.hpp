@@ -10,6 +10,7 @@ struct BenchPassesOptions {
   SceneSource scene;  // --scene and --set; no file: the built-in scene
   std::vector<std::string> resolutions{"1280x720", "640x360", "320x180"};
   uint32_t frames = 10;  // timed frames of each kind per resolution
+  bool shown = false;    // time the viewer's frame: no HDR readback, the tonemapped image kept for showing
   std::string csv = "bench_passes.csv";
   std::string plot = "bench_passes.png";
   bool validate = false;  // timings under validation are not representative
