@@ -22,7 +22,9 @@ struct FrameUniforms {
   // x: the width in pixels that textures are filtered over: 1 for a frame on
   // its own, 1/sqrt(N) for one of N jittered samples (each sample's share of
   // the pixel), so the samples' average is the pixel's box filter, not a
-  // box filtered twice. yzw unused.
+  // box filtered twice. y: 0, always: the base of the indices
+  // shared/sun_shadow.h reads uniforms by, which lavapipe cannot fold into
+  // a shader's code (TP_UNIFORM_INDEX_BASE). zw unused.
   vec4 sampling;
   ShadowCasters shadows;  // what casts the sun's shadows (shadow_casters.h, sun_shadow.h)
 };

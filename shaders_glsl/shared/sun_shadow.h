@@ -25,10 +25,23 @@
 #define TP_CASTERS_PARAM const ShadowCasters &casters,
 #define TP_CASTERS_ARG casters,
 #define TP_CASTERS casters
+#define TP_CASTERS_SUN(i) casters.sun[i]
+#define TP_CASTERS_POOL(i) casters.pool[i]
 #else
 #define TP_CASTERS_PARAM
 #define TP_CASTERS_ARG
 #define TP_CASTERS frame.shadows
+// The casters' sun and pool vectors, read through TP_UNIFORM_INDEX_BASE,
+// frame.sampling.y (always 0). Lavapipe folds the uniforms a shader's branches test into its
+// code and compiles the shader again at every draw when that halves it
+// ("inline uniforms"). The tests here on the casters and the sun did: the
+// pool's and the sphere's shaders were compiled again in every frame, about
+// 150 ms a pass without Mesa's shader cache and 1-7 ms with it
+// (docs/sun-shadows.md#cost). Through an index it cannot fold they stay
+// uniforms, and the shaders are compiled once.
+#define TP_UNIFORM_INDEX_BASE int(frame.sampling.y)
+#define TP_CASTERS_SUN(i) frame.shadows.sun[TP_UNIFORM_INDEX_BASE + (i)]
+#define TP_CASTERS_POOL(i) frame.shadows.pool[TP_UNIFORM_INDEX_BASE + (i)]
 #endif
 
 TP_BEGIN
@@ -116,7 +129,7 @@ TP_INLINE bool rayMeetsBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
 // The share of the disc about `toSun` no box hides from p (rays over the disc).
 TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY) {
   if (!kBoxShadows) return 1.0f;
-  uint boxes = uint(TP_CASTERS.sun.z);
+  uint boxes = uint(TP_CASTERS_SUN(2));
   vec3 side = normalize(cross(toSun, abs(toSun.y) < 0.9f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f)));
   vec3 up = cross(side, toSun);
   float seen = 0.0f;
@@ -148,7 +161,7 @@ TP_INLINE float boxesSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float ra
 TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radius, float minY, float maxY,
                                  float length, float behind, vec3 receiver) {
   float share = 1.0f;
-  for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS.sun.y) : 0u); ++i) {
+  for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS_SUN(1)) : 0u); ++i) {
     vec4 s = TP_CASTERS.spheres[i];
     vec3 v = vec3(s) - p;
     if (behind > 0.0f && dot(v, v) < s.w * s.w && distance(receiver, vec3(s)) > s.w * kShadowOwnSurface) return 0.0f;
@@ -166,22 +179,22 @@ TP_INLINE float legSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun, float radi
 // the walls' openings and the bent leg under the water.
 TP_INLINE float openAirSunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
   if (toSun.y <= 0.0f) return 0.0f;
-  return legSunVisibility(TP_CASTERS_ARG p, toSun, TP_CASTERS.sun.x, -1e30f, 1e30f, 1e30f, 0.0f, p);
+  return legSunVisibility(TP_CASTERS_ARG p, toSun, TP_CASTERS_SUN(0), -1e30f, 1e30f, 1e30f, 0.0f, p);
 }
 
 // The share of the sun's disc (direction toSun, above the horizon) that
 // lights the point p: 1 in the open, 0 in the umbra.
 TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
-  float radius = TP_CASTERS.sun.x;
+  float radius = TP_CASTERS_SUN(0);
   if (toSun.y <= 0.0f) return 0.0f;
-  float h = TP_CASTERS.pool.x, rim = TP_CASTERS.pool.y, level = TP_CASTERS.pool.z;
+  float h = TP_CASTERS_POOL(0), rim = TP_CASTERS_POOL(1), level = TP_CASTERS_POOL(2);
   // The walls (|x| or |z| = h) count as in: the opposite wall shades them.
-  bool inPool = TP_CASTERS.sun.w > 0.0f && max(abs(p.x), abs(p.z)) <= h + kShadowRayStart && p.y < rim;
+  bool inPool = TP_CASTERS_SUN(3) > 0.0f && max(abs(p.x), abs(p.z)) <= h + kShadowRayStart && p.y < rim;
   bool underWater = inPool && p.y < level;
   // Under the water: up the refracted ray to the surface, then on in the air.
   // The disc narrows by 1/ior across the plane of incidence and by
   // cos(air) / (ior cos(water)) in it: their geometric mean.
-  float ior = TP_CASTERS.pool.w;
+  float ior = TP_CASTERS_POOL(3);
   vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / ior) : toSun;
   float narrowing = underWater ? sqrt(toSun.y / inWater.y) / ior : 1.0f;
   vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
@@ -191,7 +204,7 @@ TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
   // level. A loop, so that the shader holds the leg's code once, and none
   // with nothing to cast a shadow: lavapipe skips a loop no pixel is in, where
   // it runs every branch of an if.
-  bool anyCaster = TP_CASTERS.sun.y > 0.0f || TP_CASTERS.sun.z > 0.0f || inPool;
+  bool anyCaster = TP_CASTERS_SUN(1) > 0.0f || TP_CASTERS_SUN(2) > 0.0f || inPool;
   float legs = 1.0f, opening = 1.0f;
   TP_DONT_UNROLL for (int leg = !anyCaster ? 2 : underWater ? 0 : 1; leg < 2; ++leg) {
     bool water = leg == 0;
@@ -218,10 +231,10 @@ TP_INLINE float sunVisibility(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
 // penumbra the average softens anyway.
 TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
   if (toSun.y <= 0.0f) return 0.0f;
-  float h = TP_CASTERS.pool.x, rim = TP_CASTERS.pool.y, level = TP_CASTERS.pool.z;
-  bool inPool = TP_CASTERS.sun.w > 0.0f && max(abs(p.x), abs(p.z)) <= h && p.y < rim;
+  float h = TP_CASTERS_POOL(0), rim = TP_CASTERS_POOL(1), level = TP_CASTERS_POOL(2);
+  bool inPool = TP_CASTERS_SUN(3) > 0.0f && max(abs(p.x), abs(p.z)) <= h && p.y < rim;
   bool underWater = inPool && p.y < level;
-  vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / TP_CASTERS.pool.w) : toSun;
+  vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / TP_CASTERS_POOL(3)) : toSun;
   vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
   // Where the ray reaches the rim's height: out of the opening, or into a wall.
   vec3 top = q + toSun * (max(rim - q.y, 0.0f) / toSun.y);
@@ -232,12 +245,12 @@ TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
     vec3 from = water ? p : q, dir = water ? inWater : toSun;
     float length = water ? distance(p, q) : 1e30f;
     float minY = water || !underWater ? -1e30f : level, maxY = water ? level : 1e30f;
-    for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS.sun.y) : 0u); ++i) {
+    for (uint i = 0u; i < (kSphereShadows ? uint(TP_CASTERS_SUN(1)) : 0u); ++i) {
       vec4 s = TP_CASTERS.spheres[i];
       float hit = raySphere(from, dir, s);
       if (s.y + s.w >= minY && s.y - s.w <= maxY && hit > 0.0f && hit < length) open = 0.0f;
     }
-    for (uint b = 0u; b < (kBoxShadows ? uint(TP_CASTERS.sun.z) : 0u); ++b) {
+    for (uint b = 0u; b < (kBoxShadows ? uint(TP_CASTERS_SUN(2)) : 0u); ++b) {
       vec4 center = TP_CASTERS.boxCenter[b], halfSize = TP_CASTERS.boxHalfSize[b];
       if (center.y + halfSize.y < minY || center.y - halfSize.y > maxY) continue;
       if (rayMeetsBox(from + kShadowRayStart * dir, dir, center, halfSize)) open = 0.0f;
@@ -257,9 +270,14 @@ float frameSunShare(vec3 p) { return 1.0; }
 float frameSunRayOpen(vec3 p) { return 1.0; }
 float frameOpenAirSunShare(vec3 p) { return 1.0; }
 #else
-float frameSunShare(vec3 p) { return sunVisibility(p, vec3(frame.sunDirection)); }
-float frameSunRayOpen(vec3 p) { return sunRayOpen(p, vec3(frame.sunDirection)); }
-float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, vec3(frame.sunDirection)); }
+// The direction to the sun, read as the casters are (TP_CASTERS_SUN).
+vec3 frameToSun() {
+  const int i = TP_UNIFORM_INDEX_BASE;
+  return vec3(frame.sunDirection[i], frame.sunDirection[i + 1], frame.sunDirection[i + 2]);
+}
+float frameSunShare(vec3 p) { return sunVisibility(p, frameToSun()); }
+float frameSunRayOpen(vec3 p) { return sunRayOpen(p, frameToSun()); }
+float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, frameToSun()); }
 #endif
 #endif
 

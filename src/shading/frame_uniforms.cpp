@@ -63,6 +63,7 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
   u.inverseProjection = glm::inverse(u.projection);
   u.skySh = light.skySh;
+  // y: the uniform index base, 0 (shared/sun_shadow.h).
   u.sampling = glm::vec4(filterWidth, 0.0f, 0.0f, 0.0f);
   return u;
 }
