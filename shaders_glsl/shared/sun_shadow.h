@@ -32,13 +32,13 @@
 #define TP_CASTERS_ARG
 #define TP_CASTERS frame.shadows
 // The casters' sun and pool vectors, read through TP_UNIFORM_INDEX_BASE,
-// frame.sampling.y (always 0). Lavapipe folds the uniforms a shader's branches test into its
-// code and compiles the shader again at every draw when that halves it
-// ("inline uniforms"). The tests here on the casters and the sun did: the
-// pool's and the sphere's shaders were compiled again in every frame, about
-// 150 ms a pass without Mesa's shader cache and 1-7 ms with it
-// (docs/sun-shadows.md#cost). Through an index it cannot fold they stay
-// uniforms, and the shaders are compiled once.
+// frame.sampling.y (always 0). Lavapipe folds the uniforms a shader's
+// branches test into its code and compiles the shader again at every draw
+// when that halves it ("inline uniforms"). The tests here on the casters
+// and the sun did: the pool's and the sphere's shaders were compiled again
+// in every frame, about 160 ms a pass without Mesa's shader cache and
+// 2-2.5 ms with it (docs/sun-shadows.md#cost). Through an index it cannot
+// fold they stay uniforms, and the shaders are compiled once.
 #define TP_UNIFORM_INDEX_BASE int(frame.sampling.y)
 #define TP_CASTERS_SUN(i) frame.shadows.sun[TP_UNIFORM_INDEX_BASE + (i)]
 #define TP_CASTERS_POOL(i) frame.shadows.pool[TP_UNIFORM_INDEX_BASE + (i)]
