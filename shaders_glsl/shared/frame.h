@@ -22,14 +22,25 @@ struct FrameUniforms {
   // x: the width in pixels that textures are filtered over: 1 for a frame on
   // its own, 1/sqrt(N) for one of N jittered samples (each sample's share of
   // the pixel), so the samples' average is the pixel's box filter, not a
-  // box filtered twice. y: 0, always: the base of the indices
-  // shared/sun_shadow.h reads uniforms by, which lavapipe cannot fold into
-  // a shader's code (TP_UNIFORM_INDEX_BASE). zw unused.
+  // box filtered twice. y: 0, always: the base of the indices some uniforms
+  // are read by, which lavapipe cannot fold into a shader's code
+  // (TP_UNIFORM_INDEX_BASE, below). zw unused.
   vec4 sampling;
   ShadowCasters shadows;  // what casts the sun's shadows (shadow_casters.h, sun_shadow.h)
 };
 
 TP_END
+
+#ifndef __cplusplus
+// Lavapipe folds the uniforms a shader's branches test into its code and
+// compiles the shader again at every draw when that halves it ("inline
+// uniforms", docs/sun-shadows.md#cost). A uniform read through an index it
+// cannot fold stays a uniform: TP_UNIFORM_INDEX_BASE is frame.sampling.y,
+// always 0, and TP_OPAQUE_ZERO, added to a value a branch tests, keeps that
+// test's uniforms out of the folding. Both read the includer's `frame`.
+#define TP_UNIFORM_INDEX_BASE int(frame.sampling.y)
+#define TP_OPAQUE_ZERO frame.sampling[TP_UNIFORM_INDEX_BASE + 1]
+#endif
 
 #ifdef __cplusplus
 static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 144 + (2 + 3 * 4) * 16);

@@ -31,15 +31,11 @@
 #define TP_CASTERS_PARAM
 #define TP_CASTERS_ARG
 #define TP_CASTERS frame.shadows
-// The casters' sun and pool vectors, read through TP_UNIFORM_INDEX_BASE,
-// frame.sampling.y (always 0). Lavapipe folds the uniforms a shader's
-// branches test into its code and compiles the shader again at every draw
-// when that halves it ("inline uniforms"). The tests here on the casters
-// and the sun did: the pool's and the sphere's shaders were compiled again
-// in every frame, about 160 ms a pass without Mesa's shader cache and
-// 2-2.5 ms with it (docs/sun-shadows.md#cost). Through an index it cannot
-// fold they stay uniforms, and the shaders are compiled once.
-#define TP_UNIFORM_INDEX_BASE int(frame.sampling.y)
+// The casters' sun and pool vectors, read through TP_UNIFORM_INDEX_BASE
+// (shared/frame.h). The tests here on the casters and the sun had lavapipe
+// compile the pool's and the sphere's shaders again in every frame, about
+// 160 ms a pass without Mesa's shader cache and 2-2.5 ms with it
+// (docs/sun-shadows.md#cost).
 #define TP_CASTERS_SUN(i) frame.shadows.sun[TP_UNIFORM_INDEX_BASE + (i)]
 #define TP_CASTERS_POOL(i) frame.shadows.pool[TP_UNIFORM_INDEX_BASE + (i)]
 #endif
@@ -265,16 +261,16 @@ TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
 // cmake/shaders.cmake), which hold none of the code above.
 // And whether the sun's central ray from p is open (sunRayOpen).
 // And the share for a point out of the pool (openAirSunVisibility).
-#ifdef TP_NO_SHADOWS
-float frameSunShare(vec3 p) { return 1.0; }
-float frameSunRayOpen(vec3 p) { return 1.0; }
-float frameOpenAirSunShare(vec3 p) { return 1.0; }
-#else
 // The direction to the sun, read as the casters are (TP_CASTERS_SUN).
 vec3 frameToSun() {
   const int i = TP_UNIFORM_INDEX_BASE;
   return vec3(frame.sunDirection[i], frame.sunDirection[i + 1], frame.sunDirection[i + 2]);
 }
+#ifdef TP_NO_SHADOWS
+float frameSunShare(vec3 p) { return 1.0; }
+float frameSunRayOpen(vec3 p) { return 1.0; }
+float frameOpenAirSunShare(vec3 p) { return 1.0; }
+#else
 float frameSunShare(vec3 p) { return sunVisibility(p, frameToSun()); }
 float frameSunRayOpen(vec3 p) { return sunRayOpen(p, frameToSun()); }
 float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, frameToSun()); }

@@ -38,10 +38,17 @@
 #define TP_FRAME_PARAM const FrameUniforms &frame,
 #define TP_FRAME_ARG frame,
 #define TP_SCATTER_SUN_SHARE(p) sunRayOpen(frame.shadows, p, vec3(frame.sunDirection))
+#define TP_SCATTER_TO_SUN vec3(frame.sunDirection)
+#define TP_SCATTER_UNFOLDED(x) (x)
 #else
 #define TP_FRAME_PARAM
 #define TP_FRAME_ARG
 #define TP_SCATTER_SUN_SHARE(p) frameSunRayOpen(p)
+// The sun's direction and the medium's values the code below tests, read so
+// that lavapipe does not compile the shader again at every draw
+// (TP_UNIFORM_INDEX_BASE in shared/frame.h).
+#define TP_SCATTER_TO_SUN frameToSun()
+#define TP_SCATTER_UNFOLDED(x) ((x) + TP_OPAQUE_ZERO)
 #endif
 
 TP_BEGIN
@@ -89,7 +96,7 @@ TP_INLINE vec3 waterInScatter(TP_FRAME_PARAM vec3 extinction, vec4 scattering, f
   float depth = level - start.y;
   vec3 light = beamInScatter(extinction, vec3(scattering), sh9Irradiance(frame.skySh, vec3(0.0f, 1.0f, 0.0f)),
                              1.0f / (4.0f * kPi), 1.0f, depth, dir.y, length);
-  vec3 toSun = vec3(frame.sunDirection);
+  vec3 toSun = TP_SCATTER_TO_SUN;
   if (toSun.y <= 0.0f) return light;
   vec3 travel = refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / ior);
   float mu = -travel.y;
@@ -118,9 +125,9 @@ TP_INLINE vec3 viewInScatter(TP_FRAME_PARAM CameraMedium medium, vec3 p) {
   vec3 light = vec3(0.0f);
   vec3 camera = vec3(frame.cameraPosition);
   float length = distance(camera, p);
-  if (waterScatters(medium.scattering) && length > 0.0f) {
+  if (waterScatters(TP_SCATTER_UNFOLDED(medium.scattering)) && length > 0.0f) {
     light = waterInScatter(TP_FRAME_ARG vec3(medium.extinction), medium.scattering, medium.water.x, medium.water.y,
-                           uint(medium.water.z), camera, (p - camera) / length, length);
+                           uint(TP_SCATTER_UNFOLDED(medium.water.z)), camera, (p - camera) / length, length);
   }
   return light;
 }
