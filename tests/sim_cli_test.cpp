@@ -222,24 +222,33 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   expectCleanFailure("bench passes --csv " + bad.file("x.txt"), bad, {});
 }
 
-// A sphere crossing a small pool at one speed, both immersions, two kappas:
-// a row each, the smoothness measured; bad lists refused with one line.
+// A sphere crossing a small pool at one speed, both immersions, both
+// forcings, two kappas: a row each, the smoothness measured; bad lists
+// refused with one line.
 TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;
   const std::string csv = dir.file("wake.csv");
-  ProcessResult r =
-      runTidepool("bench wake --validate --sizes 32 --speeds 0.9 --grid-dampings 0,2 --csv " + csv + " --plot ''", dir);
+  ProcessResult r = runTidepool(
+      "bench wake --validate --sizes 32 --speeds 0.9 --grid-dampings 0,2 --wave-speed 0.9 --csv " + csv + " --plot ''",
+      dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header,
-            "grid,speed_fraction,immersion,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,trough_m,"
-            "volume_change_m3,device")
+            "grid,speed_fraction,immersion,forcing,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,"
+            "trough_m,volume_change_m3,device")
       << table.header;
-  EXPECT_EQ(table.rows, 2 * 2);
+  EXPECT_EQ(table.rows, 2 * 2 * 2);
   EXPECT_NE(r.out.find("submerged"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("spread"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  r = runTidepool("bench wake --sizes 32 --speeds 0.5 --grid-dampings 2 --forcings spread --csv " + csv + " --plot ''",
+                  dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(csvShape(csv).rows, 2);
+  EXPECT_EQ(r.out.find("column"), std::string::npos) << r.out;
   ScratchDir bad;
-  for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x"}) {
+  for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x", "--forcings chord",
+                             "--wave-speed 0", "--wave-speed x"}) {
     expectCleanFailure(std::string("bench wake ") + option + " --csv " + bad.file("x.csv"), bad, {});
   }
   expectCleanFailure("bench wake --csv " + bad.file("x.txt"), bad, {});

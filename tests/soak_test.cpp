@@ -18,6 +18,7 @@
 #include "gpu/context.hpp"
 #include "gpu/submit.hpp"
 #include "gpu_test.hpp"
+#include "scene/scene.hpp"
 #include "sim/gpu_stepper.hpp"
 #include "sim/water_state.hpp"
 #include "sim_support.hpp"
@@ -48,7 +49,8 @@ long soak(const gpu::Context& ctx, sim::Boundary boundary) {
   params.extent = 4.0;
   params.waveSpeed = 1.0;
   params.damping = 0.05;
-  params.gridDamping = 2.0;   // the scenes' default
+  params.gridDamping = 2.0;                                                      // the scenes' default
+  params.sphereForcing = sim::parseSphereForcing(scene::Water{}.sphereForcing);  // the scenes' default
   params.spillHeight = 0.15;  // the default scene's rim over its water
   params.boundary = boundary;
   const double dt = 0.45 * sim::kStabilityBound * params.h() / params.waveSpeed;

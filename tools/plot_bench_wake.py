@@ -15,18 +15,20 @@ def main(csv_path, png_path):
     measures = [("high_share", "variance share above half Nyquist"), ("max_slope", "steepest slope"),
                 ("crest_m", "highest crest (m)")]
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
-    kappas = sorted({float(r["grid_damping"]) for r in rows})
+    # One colour per forcing and grid damping (older CSVs have no forcing column: the column forcing).
+    series = sorted({(r.get("forcing", "column"), float(r["grid_damping"])) for r in rows})
     markers = {"half": "o", "submerged": "s"}
     colours = plt.get_cmap("viridis")
     for ax, (key, label) in zip(axes, measures):
-        for k, kappa in enumerate(kappas):
+        for k, (forcing, kappa) in enumerate(series):
             for immersion, marker in markers.items():
-                picked = [r for r in rows if float(r["grid_damping"]) == kappa and r["immersion"] == immersion]
+                picked = [r for r in rows if (r.get("forcing", "column"), float(r["grid_damping"])) == (forcing, kappa)
+                          and r["immersion"] == immersion]
                 if not picked:
                     continue
                 ax.scatter([float(r["ms_per_step"]) for r in picked], [float(r[key]) for r in picked],
-                           marker=marker, color=colours(k / max(1, len(kappas) - 1)),
-                           label=f"kappa {kappa:g}/s, {immersion}")
+                           marker=marker, color=colours(k / max(1, len(series) - 1)),
+                           label=f"{forcing}, kappa {kappa:g}/s, {immersion}")
                 for r in picked:
                     ax.annotate(f'{r["grid"]} {float(r["speed_fraction"]):g}c',
                                 (float(r["ms_per_step"]), float(r[key])), fontsize=6)

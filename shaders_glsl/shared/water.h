@@ -56,14 +56,18 @@ struct WaterDropParams {
 // Push constants of water_sphere.comp: a sphere moving from one centre to
 // another raises and lowers the surface column by column: u changes by the
 // sphere's volume below the rest level within the column's square where it
-// goes minus where it was (shared/sphere_column.h), over the square's area.
+// goes minus where it was (shared/sphere_column.h), over the square's area;
+// or, with the spread forcing, that volume spread as shared/sphere_spread.h
+// says.
 struct WaterSphereParams {
   vec4 oldCenter;  // xyz, w: radius
   vec4 newCenter;  // xyz, w: rest level of the water surface
   uint n;
   float h;
-  uint markStep;  // as in WaterDropParams
-  uint pad;
+  uint markStep;     // as in WaterDropParams
+  uint wrap;         // 1: the grid wraps round (the spread forcing's images)
+  float spreadDepth;  // the spread forcing's widening per metre of depth (shared/sphere_spread.h)
+  float pad0, pad1, pad2;
 };
 
 // Push constants of water_step_active.comp: one step over whole tiles. Tile t
@@ -132,7 +136,7 @@ static_assert(offsetof(tp::shader::WaterCell, z) == 8);
 static_assert(offsetof(tp::shader::WaterCell, v) == 12);
 static_assert(sizeof(tp::shader::WaterStepParams) == 48);
 static_assert(sizeof(tp::shader::WaterDropParams) == 32);
-static_assert(sizeof(tp::shader::WaterSphereParams) == 48);
+static_assert(sizeof(tp::shader::WaterSphereParams) == 64);
 static_assert(sizeof(tp::shader::WaterStatsParams) == 32);
 static_assert(sizeof(tp::shader::WaterTileStepParams) == 64);
 static_assert(offsetof(tp::shader::WaterTileStepParams, stepIndex) == 48);

@@ -5,6 +5,7 @@
 #include "cli/gpu_session.hpp"
 #include "cli/number_checks.hpp"
 #include "cli/old_spelling.hpp"
+#include "scene/scene.hpp"
 
 namespace tp::app {
 
@@ -88,6 +89,12 @@ void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
   addListOption(wake, "--speeds", o.speeds, "Sphere speeds as fractions of the wave speed", inRange(0.05, 2.0));
   addListOption(wake, "--grid-dampings", o.gridDampings, "Grid damping kappa values in 1/s to compare",
                 inRange(0.0, 1e4));
+  addListOption(wake, "--forcings", o.forcings, "Sphere forcings to compare (water.sphere_forcing)",
+                CLI::IsMember(scene::choices::kSphereForcing));
+  wake->add_option("--wave-speed", o.waveSpeed,
+                   "The water's wave speed c in m/s; the sphere's speeds are fractions of it")
+      ->capture_default_str()
+      ->check(inRange(0.05, 10.0));
   addOutputOptions(wake, o.csv, o.plot);
   addGpuOptions(wake, o.validate, o.device);
 }

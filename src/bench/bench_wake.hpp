@@ -3,12 +3,16 @@
 #include <string>
 #include <vector>
 
+#include "sim/wake_run.hpp"
+
 namespace tp::app {
 
 struct BenchWakeOptions {
   std::vector<uint32_t> sizes{64, 128, 256};
-  std::vector<double> speeds{0.2, 0.5, 0.9};        // of the wave speed
-  std::vector<double> gridDampings{0.0, 2.0, 5.0};  // kappa, 1/s: the forcing methods compared
+  std::vector<double> speeds{0.2, 0.5, 0.9};              // of the wave speed
+  std::vector<double> gridDampings{0.0, 2.0, 5.0};        // kappa, 1/s
+  std::vector<std::string> forcings{"column", "spread"};  // the forcing methods compared
+  double waveSpeed = sim::WakeCase{}.waveSpeed;           // c, m/s: the default scene's
   std::string csv = "bench_wake.csv";
   std::string plot = "bench_wake.png";
   bool validate = false;
@@ -17,7 +21,7 @@ struct BenchWakeOptions {
 
 // `tidepool bench wake`: a sphere of the default scene's size crossing the
 // default pool (sim/wake_run.hpp), half in and fully under the water, at each
-// grid size, speed and grid damping: the share of the height variance above
+// grid size, speed, grid damping and forcing: the share of the height variance above
 // half the Nyquist wavenumber, the steepest slope, the highest crest and
 // deepest trough against the wall milliseconds per step (forcing and step).
 // A table, CSV and a plot.

@@ -161,6 +161,7 @@ void validateWater(const Scene& s) {
   requireRange(w.damping, 0.0f, 1e4f, "water.damping");
   requireRange(w.gridDamping, 0.0f, 1e4f, "water.grid_damping");
   requireOneOf(w.boundary, choices::kBoundary, "water.boundary");
+  requireOneOf(w.sphereForcing, choices::kSphereForcing, "water.sphere_forcing");
   requireRange(w.maxSlope, 0.0f, 1e4f, "water.max_slope");
   requireRange(w.frameTime, 1e-6f, 10.0f, "water.frame_time");
   requireRange(w.ior, 1.0f, 3.0f, "water.ior");

@@ -12,6 +12,7 @@ namespace tp::scene {
 // them, the viewer's panel offers them.
 namespace choices {
 inline const std::vector<std::string> kBoundary{"clamp", "wrap"};
+inline const std::vector<std::string> kSphereForcing{"column", "spread"};
 inline const std::vector<std::string> kRefraction{"accurate", "apparent"};
 inline const std::vector<std::string> kAntialiasing{"off", "morphological"};
 inline const std::vector<std::string> kAoPattern{"hammersley", "random"};
@@ -187,6 +188,11 @@ struct Water {
   // barely travel (sim::WaterParams::gridDamping, docs/water-numerics.md).
   float gridDamping = 2.0f;
   std::string boundary = "clamp";
+  // How a moving sphere displaces the water (sim::SphereForcing): "spread",
+  // its submerged volume spread over the surface as the flow around the body
+  // lifts it; "column", the volume in each column, whose edge at the
+  // waterline steepens the wake as the grid is refined (docs/water-numerics.md).
+  std::string sphereForcing = "spread";
   float maxSlope = 0.0f;
   float frameTime = 1.0f / 30.0f;  // seconds of simulation per rendered frame
   float ior = 1.333f;

@@ -86,6 +86,7 @@ void visitWaterKeys(R& r, Water& x) {
   r.number("damping", x.damping);
   r.number("grid_damping", x.gridDamping);
   r.choice("boundary", x.boundary, choices::kBoundary);
+  r.choice("sphere_forcing", x.sphereForcing, choices::kSphereForcing);
   r.number("max_slope", x.maxSlope);
   r.number("frame_time", x.frameTime);
   r.number("ior", x.ior);

@@ -81,7 +81,9 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   stepTiled_ = gpu::createComputePipeline(ctx, "water_step_tiled.comp", sizeof(shader::WaterStepParams),
                                           gpu::Specialization().set(0, int32_t(halo)));
   dropPipeline_ = gpu::createComputePipeline(ctx, "water_drop.comp", sizeof(shader::WaterDropParams));
-  spherePipeline_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams));
+  sphereColumn_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams));
+  sphereSpread_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams),
+                                             gpu::Specialization().set(0, vk::Bool32(true)));
   stepActive_ = gpu::createComputePipeline(ctx, "water_step_active.comp", sizeof(shader::WaterTileStepParams));
   statsPipeline_ = gpu::createComputePipeline(ctx, "water_stats.comp", sizeof(shader::WaterStatsParams));
   const std::string grid = std::to_string(n) + "x" + std::to_string(n) + " water state";
@@ -112,7 +114,7 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
     sphereSets_[k] = gpu::DescriptorWrites()
                          .storageBuffer(0, buffers_[k])
                          .storageBuffer(1, tiles_.changedAt())
-                         .allocate(spherePipeline_, descriptors_);
+                         .allocate(sphereColumn_, descriptors_);  // the same layout as sphereSpread_'s
     statsSets_[k] = gpu::DescriptorWrites()
                         .storageBuffer(0, buffers_[k])
                         .storageBuffer(1, partials_)
@@ -257,10 +259,15 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
                               .n = params_.n,
                               .h = float(params_.h()),
                               .markStep = uint32_t(stepIndex_),
-                              .pad = 0};
-  gpu::bindPipeline(cmd, spherePipeline_, p);
-  gpu::bindSet(cmd, spherePipeline_, sphereSets_[current_]);
-  gpu::dispatchCovering(cmd, spherePipeline_, params_.n, params_.n);
+                              .wrap = params_.boundary == Boundary::Wrap ? 1u : 0u,
+                              .spreadDepth = float(kSpreadDepthFactor),
+                              .pad0 = 0.0f,
+                              .pad1 = 0.0f,
+                              .pad2 = 0.0f};
+  const gpu::Pipeline& pipeline = params_.sphereForcing == SphereForcing::Spread ? sphereSpread_ : sphereColumn_;
+  gpu::bindPipeline(cmd, pipeline, p);
+  gpu::bindSet(cmd, pipeline, sphereSets_[current_]);
+  gpu::dispatchCovering(cmd, pipeline, params_.n, params_.n);
 }
 
 void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, double dt) {

@@ -86,7 +86,9 @@ class GpuStepper {
   WaterParams params_;
   StepKernel kernel_;
   uint32_t halo_;
-  gpu::Pipeline stepOne_, stepTiled_, stepActive_, dropPipeline_, spherePipeline_, statsPipeline_;
+  gpu::Pipeline stepOne_, stepTiled_, stepActive_, dropPipeline_, statsPipeline_;
+  // A sphere's forcing, each way (SphereForcing): setParams may change it.
+  gpu::Pipeline sphereColumn_, sphereSpread_;
   gpu::Buffer buffers_[2];
   // Every kernel keeps the tile flags: drops and spheres mark them whatever steps.
   WaterTiles tiles_;

@@ -15,8 +15,12 @@ constexpr uint64_t kStepsPerSubmit = 256;  // keeps command buffers small on lon
 }  // namespace
 
 WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {
-  const WaterParams params{
-      .n = c.grid, .extent = c.extent, .waveSpeed = c.waveSpeed, .damping = c.damping, .gridDamping = c.gridDamping};
+  const WaterParams params{.n = c.grid,
+                           .extent = c.extent,
+                           .waveSpeed = c.waveSpeed,
+                           .damping = c.damping,
+                           .gridDamping = c.gridDamping,
+                           .sphereForcing = c.forcing};
   validate(params);
   const double dt = c.frameTime / substepsFor(params, c.frameTime);
   const double speed = c.speedFraction * c.waveSpeed;

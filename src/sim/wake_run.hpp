@@ -6,6 +6,7 @@
 #include "gpu/context.hpp"
 #include "scene/scene.hpp"
 #include "sim/wake_measures.hpp"
+#include "sim/water_params.hpp"
 #include "sim/water_state.hpp"
 
 namespace tp::sim {
@@ -15,6 +16,7 @@ struct WakeCase {
   double speedFraction = 0.5;  // the sphere's speed over the wave speed
   bool submerged = false;      // fully under, its top kSubmergedClearance below the level; else half in
   double gridDamping = scene::Water{}.gridDamping;  // kappa, 1/s: the scenes' default
+  SphereForcing forcing = SphereForcing::Column;
   // The default scene's pool and sphere: a 4 m square, c = 0.6 m/s,
   // gamma = 0.3/s, a sphere of 0.45 m crossing 2.8 m along x at 30 frames/s.
   double extent = 4.0, waveSpeed = 0.6, damping = 0.3, radius = 0.45, crossing = 2.8, frameTime = 1.0 / 30.0;
@@ -35,7 +37,7 @@ struct WakeResult {
 };
 
 // Runs the crossing on `ctx` from still water: each step moves the sphere
-// by its speed times dt (shared/sphere_column.h's displacement), then steps.
+// by its speed times dt (the case's forcing displaces the water), then steps.
 WakeResult runWake(const gpu::Context& ctx, const WakeCase& c);
 
 }  // namespace tp::sim

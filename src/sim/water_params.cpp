@@ -79,4 +79,12 @@ Scheme parseScheme(const std::string& s) {
   throw std::runtime_error("scheme must be symplectic or explicit, got '" + s + "'");
 }
 
+std::string toString(SphereForcing f) { return f == SphereForcing::Column ? "column" : "spread"; }
+
+SphereForcing parseSphereForcing(const std::string& s) {
+  if (s == "column") return SphereForcing::Column;
+  if (s == "spread") return SphereForcing::Spread;
+  throw std::runtime_error("sphere forcing must be column or spread, got '" + s + "'");
+}
+
 }  // namespace tp::sim

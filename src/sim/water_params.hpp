@@ -7,6 +7,16 @@ namespace tp::sim {
 
 enum class Boundary { Clamp, Wrap };
 enum class Scheme { Symplectic, Explicit };
+// How a moving sphere displaces the water: each column by the sphere's volume
+// within it (shared/sphere_column.h), or that volume spread over the surface
+// as the flow around the body lifts it (shared/sphere_spread.h).
+enum class SphereForcing { Column, Spread };
+
+// The spread forcing's widening: a body d below the surface lifts a bump of
+// deviation kSpreadDepthFactor * d more. A source at depth d under a free
+// surface lifts it as the Poisson kernel d / (2 pi (rho^2 + d^2)^1.5), whose
+// half maximum lies at rho = 0.766 d; a Gaussian's lies at 1.177 sigma.
+inline constexpr double kSpreadDepthFactor = 0.766 / 1.177;
 
 // The 2D bound on the Courant number lambda = c dt / h: the checkerboard mode
 // is stable only for lambda <= 1/sqrt(2) (DESIGN.md, "Numerics of the water").
@@ -27,6 +37,7 @@ struct WaterParams {
   // Clamp boundary: the rim's height over the rest level. A cell along a wall
   // that would rise above it stays at it (its water spills out of the pool).
   double spillHeight = std::numeric_limits<double>::infinity();
+  SphereForcing sphereForcing = SphereForcing::Column;
 
   double h() const { return extent / n; }
   double lambda(double dt) const { return waveSpeed * dt / h(); }
@@ -53,5 +64,7 @@ std::string toString(Boundary b);
 std::string toString(Scheme s);
 Boundary parseBoundary(const std::string& s);  // throws on anything but clamp|wrap
 Scheme parseScheme(const std::string& s);      // throws on anything but symplectic|explicit
+std::string toString(SphereForcing f);
+SphereForcing parseSphereForcing(const std::string& s);  // throws on anything but column|spread
 
 }  // namespace tp::sim

@@ -12,7 +12,8 @@ WaterParams waterParams(const scene::Water& w) {
                      .damping = w.damping,
                      .boundary = parseBoundary(w.boundary),
                      .maxSlope = w.maxSlope,
-                     .gridDamping = w.gridDamping};
+                     .gridDamping = w.gridDamping,
+                     .sphereForcing = parseSphereForcing(w.sphereForcing)};
 }
 
 WaterParams waterParams(const scene::Scene& s) {
