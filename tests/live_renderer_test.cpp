@@ -126,6 +126,7 @@ TEST_F(LiveRendererTest, NewWaterDynamicsGoOnFromTheState) {
   w.damping = 0.8f;
   w.boundary = "wrap";
   w.maxSlope = 0.2f;
+  w.sphereForcing = "column";
   const uint32_t before = sim::waterSubsteps(s.water), after = sim::waterSubsteps(w);
   ASSERT_NE(before, after);
 

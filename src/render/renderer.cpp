@@ -366,7 +366,8 @@ void Renderer::moveSphere(size_t index, glm::vec3 center) {
 void Renderer::setWaterDynamics(const scene::Water& water) {
   if (!res_->water) throw std::runtime_error("the scene has no water");
   if (sim::withDynamicsOf(water, scene_.water) != scene_.water) {
-    throw std::invalid_argument("only the wave speed, damping, boundary and max slope change on a live renderer");
+    throw std::invalid_argument(
+        "only the wave speed, damping, grid damping, boundary, max slope and sphere forcing change on a live renderer");
   }
   res_->water->setDynamics(water);  // validates before it changes anything
   scene_.water = water;

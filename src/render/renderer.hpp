@@ -148,7 +148,8 @@ class Renderer {
   // displaced (as a moving sphere's), waking sleeping water. Throws
   // std::out_of_range for a bad index.
   void moveSphere(size_t index, glm::vec3 center);
-  // New wave speed, damping, boundary or max slope from the next frame on:
+  // New wave speed, damping, grid damping, boundary, max slope or sphere
+  // forcing from the next frame on:
   // the water goes on from its state (waking if asleep), the substeps follow
   // the wave speed. Any other field of `water` must be the scene's (throws
   // std::invalid_argument: those need a new renderer). Going back to an

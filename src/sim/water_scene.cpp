@@ -77,6 +77,7 @@ scene::Water withDynamicsOf(scene::Water water, const scene::Water& from) {
   water.gridDamping = from.gridDamping;
   water.boundary = from.boundary;
   water.maxSlope = from.maxSlope;
+  water.sphereForcing = from.sphereForcing;
   return water;
 }
 

@@ -36,8 +36,8 @@ WaterParams waterParams(const scene::Water& water);
 // over which the water along the walls spills: what the renderer steps.
 WaterParams waterParams(const scene::Scene& scene);
 
-// `water` with the dynamics of `from`: its wave speed, damping, grid damping, boundary and
-// max slope, what a live renderer changes (Renderer::setWaterDynamics).
+// `water` with the dynamics of `from`: its wave speed, damping, grid damping, boundary, max
+// slope and sphere forcing, what a live renderer changes (Renderer::setWaterDynamics).
 scene::Water withDynamicsOf(scene::Water water, const scene::Water& from);
 // Whether two waters move alike, being equal but for their ior,
 // absorption and scattering (which only shade): a renderer can carry one's state on to the other.

@@ -26,7 +26,7 @@ const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
 // The keys the renderer takes live (from the next frame, nothing rebuilt).
 bool takenLive(std::string_view path) {
   return path.starts_with("camera.") || path == "water.wave_speed" || path == "water.damping" ||
-         path == "water.grid_damping" || path == "water.max_slope" ||
+         path == "water.grid_damping" || path == "water.max_slope" || path == "water.sphere_forcing" ||
          (path.starts_with("spheres[") && path.ends_with("].center"));
 }
 
