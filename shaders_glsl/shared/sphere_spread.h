@@ -75,17 +75,36 @@ TP_INLINE float pooledShare(float x0, float x1, float c, float sigma, float leng
   return normalShare(x0, x1, c, sigma) + normalShare(x0, x1, below, sigma) + normalShare(x0, x1, above, sigma);
 }
 
+// The share of a ball's volume below the plane x = t r across it, its
+// centre at 0: the ball's volume along x goes as r^2 - x^2.
+TP_INLINE float ballShareBelow(float t) {
+  const float s = clamp(t, -1.0f, 1.0f);
+  return (2.0f + 3.0f * s - s * s * s) / 4.0f;
+}
+
+// The share of the ball (centre c along one axis, radius) between the walls
+// at 0 and `length`: 1 inside the pool, fading as it passes into a wall, 0
+// beyond. Exact for a ball through one wall.
+TP_INLINE float ballShareInside(float c, float radius, float length) {
+  return ballShareBelow((length - c) / radius) - ballShareBelow(-c / radius);
+}
+
 // Volume the sphere (centre, radius) displaces into the column over the
 // square [lo, hi] of a pool of `length` per side, the level at `level`:
 // its submerged volume as a bump of variance moments.variance plus
-// (depthFactor * meanDepth)^2.
+// (depthFactor * meanDepth)^2. With walls, only the share of the sphere
+// between them displaces water (as with the column forcing, a sphere
+// dragged through a wall leaves the pool's water as it was); the grid that
+// wraps round has none.
 TP_INLINE float sphereSpreadVolume(vec2 lo, vec2 hi, vec3 center, float radius, float level, float length,
                                    float depthFactor, bool wrap) {
   const SubmergedMoments m = submergedMoments(radius, level - center.y + radius);
   if (m.volume <= 0.0f) return 0.0f;
   const float widening = depthFactor * m.meanDepth;
   const float sigma = sqrt(m.variance + widening * widening);
-  return m.volume * pooledShare(lo.x, hi.x, center.x, sigma, length, wrap) *
+  const float inside =
+      wrap ? 1.0f : ballShareInside(center.x, radius, length) * ballShareInside(center.z, radius, length);
+  return m.volume * inside * pooledShare(lo.x, hi.x, center.x, sigma, length, wrap) *
          pooledShare(lo.y, hi.y, center.z, sigma, length, wrap);
 }
 
