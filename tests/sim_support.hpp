@@ -10,6 +10,20 @@
 
 namespace tp::test {
 
+// The sum of cell(lo, hi) over the squares of an n x n grid `length` metres
+// a side, from the corner at the origin.
+template <typename Cell>
+double sumOverCells(uint32_t n, float length, Cell cell) {
+  const float h = length / float(n);
+  double sum = 0.0;
+  for (uint32_t j = 0; j < n; ++j) {
+    for (uint32_t i = 0; i < n; ++i) {
+      sum += cell(glm::vec2(float(i) * h, float(j) * h), glm::vec2(float(i + 1) * h, float(j + 1) * h));
+    }
+  }
+  return sum;
+}
+
 // White noise of the given amplitude around `level`, v = 0, from a fixed seed:
 // the hardest field for round-off, every mode up to the checkerboard excited.
 inline sim::WaterState randomState(uint32_t n, double level, double amplitude, uint32_t seed) {

@@ -34,15 +34,8 @@ double midpointVolume(glm::dvec2 lo, double h, glm::dvec3 c, double radius, doub
 }
 
 double gridVolume(uint32_t n, double extent, glm::vec3 c, float radius, float level) {
-  const float h = float(extent / n);
-  double sum = 0.0;
-  for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) {
-      sum += shader::sphereColumnVolume(glm::vec2(float(i) * h, float(j) * h),
-                                        glm::vec2(float(i + 1) * h, float(j + 1) * h), c, radius, level);
-    }
-  }
-  return sum;
+  return sumOverCells(n, float(extent),
+                      [&](glm::vec2 lo, glm::vec2 hi) { return shader::sphereColumnVolume(lo, hi, c, radius, level); });
 }
 
 }  // namespace

@@ -13,9 +13,14 @@
 #include "shared/sphere_column.h"
 #include "shared/sphere_spread.h"
 #include "sim/wake_measures.hpp"
+#include "sim_support.hpp"
 
 namespace tp::test {
 namespace {
+
+// The widening per metre of depth the tests give the header: any factor
+// will do, and this one is the renderer's (sim::kSpreadDepthFactor) rounded.
+constexpr float kDepthFactor = 0.65f;
 
 struct DoubleMoments {
   double volume = 0.0, variance = 0.0, meanDepth = 0.0;
@@ -59,16 +64,9 @@ double midpointBump(glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 c, double sigma, do
 }
 
 double gridVolume(uint32_t n, float length, glm::vec3 c, float radius, float level, bool wrap) {
-  const float h = length / float(n);
-  double sum = 0.0;
-  for (uint32_t j = 0; j < n; ++j) {
-    for (uint32_t i = 0; i < n; ++i) {
-      sum += shader::sphereSpreadVolume(glm::vec2(float(i) * h, float(j) * h),
-                                        glm::vec2(float(i + 1) * h, float(j + 1) * h), c, radius, level, length, 0.65f,
-                                        wrap);
-    }
-  }
-  return sum;
+  return sumOverCells(n, length, [&](glm::vec2 lo, glm::vec2 hi) {
+    return shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, wrap);
+  });
 }
 
 }  // namespace
@@ -114,12 +112,12 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
   for (const float centreY : {0.0f, -0.8f}) {
     const glm::vec3 c(2.013f, centreY, 1.971f);
     const shader::SubmergedMoments m = shader::submergedMoments(radius, level - centreY + radius);
-    const double widening = 0.65 * m.meanDepth, sigma = std::sqrt(m.variance + widening * widening);
+    const double sigma = shader::spreadDeviation(m, kDepthFactor);
     double worst = 0.0;
     for (uint32_t j = 20; j < 44; j += 3) {
       for (uint32_t i = 20; i < 44; i += 3) {
         const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
-        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, 0.65f, false);
+        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false);
         const double want = midpointBump(lo, hi, glm::dvec2(c.x, c.z), sigma, m.volume, 64);
         worst = std::max(worst, std::abs(got - want) / m.volume);
       }
@@ -160,18 +158,12 @@ TEST(SphereSpread, ColumnsAddUpToTheSubmergedVolume) {
 TEST(SphereSpread, ABallThroughAWallDisplacesItsPartInside) {
   const float radius = 0.45f, length = 4.0f, level = 0.0f;
   const uint32_t n = 128;
-  const float h = length / float(n);
   const double ball = 4.0 / 3.0 * glm::pi<double>() * radius * radius * radius;
   double worst = 0.0;
   for (const float x : {0.3f, 0.0f, -0.2f, 3.8f, 4.4f}) {
     const glm::vec3 c(x, -0.6f, 2.013f);
-    double columns = 0.0;
-    for (uint32_t j = 0; j < n; ++j) {
-      for (uint32_t i = 0; i < n; ++i) {
-        columns += shader::sphereColumnVolume(glm::vec2(float(i) * h, float(j) * h),
-                                              glm::vec2(float(i + 1) * h, float(j + 1) * h), c, radius, level);
-      }
-    }
+    const double columns = sumOverCells(
+        n, length, [&](glm::vec2 lo, glm::vec2 hi) { return shader::sphereColumnVolume(lo, hi, c, radius, level); });
     const double spread = gridVolume(n, length, c, radius, level, false);
     std::printf("ball at x %.2f: spread %.6f, columns %.6f m^3\n", x, spread, columns);
     worst = std::max(worst, std::abs(spread - columns) / ball);
@@ -190,7 +182,7 @@ TEST(SphereSpread, ABallThroughAWallDisplacesItsPartInside) {
 TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
   const float radius = 0.45f, length = 4.0f;
   const shader::SubmergedMoments m = shader::submergedMoments(radius, radius);
-  const double widening = 0.65 * m.meanDepth, sigma = std::sqrt(m.variance + widening * widening);
+  const double sigma = shader::spreadDeviation(m, kDepthFactor);
   const double steepest = m.volume / (2.0 * glm::pi<double>() * sigma * sigma) / (sigma * std::sqrt(std::exp(1.0)));
   for (const uint32_t n : {64u, 512u}) {
     const float h = length / float(n);
@@ -198,9 +190,10 @@ TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
       double worstRate = 0.0;
       for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 lo(float(i) * h, 2.0f), hi(float(i + 1) * h, 2.0f + h);
-        const float before = shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, 0.65f, false);
+        const float before =
+            shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor, false);
         const float after =
-            shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length, 0.65f, false);
+            shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor, false);
         worstRate = std::max(worstRate, std::abs(double(after) - double(before)) / (step * h * h));
       }
       std::printf("%u cells, step %.0e m: largest height change per metre moved %.4f (the bump's slope %.4f)\n", n,

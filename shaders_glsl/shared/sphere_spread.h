@@ -44,6 +44,13 @@ TP_INLINE SubmergedMoments submergedMoments(float radius, float depth) {
   return m;
 }
 
+// The bump's deviation: the submerged part's horizontal spread and
+// depthFactor times its mean depth, added as variances.
+TP_INLINE float spreadDeviation(SubmergedMoments m, float depthFactor) {
+  const float widening = depthFactor * m.meanDepth;
+  return sqrt(m.variance + widening * widening);
+}
+
 // The standard normal's upper tail P(Z > u) for u >= 0 (Abramowitz and
 // Stegun 7.1.26, absolute error under 1e-7). Zero past 8: the tail there
 // is under 1e-15, and a bump that ends leaves the water beyond it untouched.
@@ -100,8 +107,7 @@ TP_INLINE float sphereSpreadVolume(vec2 lo, vec2 hi, vec3 center, float radius, 
                                    float depthFactor, bool wrap) {
   const SubmergedMoments m = submergedMoments(radius, level - center.y + radius);
   if (m.volume <= 0.0f) return 0.0f;
-  const float widening = depthFactor * m.meanDepth;
-  const float sigma = sqrt(m.variance + widening * widening);
+  const float sigma = spreadDeviation(m, depthFactor);
   const float inside =
       wrap ? 1.0f : ballShareInside(center.x, radius, length) * ballShareInside(center.z, radius, length);
   return m.volume * inside * pooledShare(lo.x, hi.x, center.x, sigma, length, wrap) *
