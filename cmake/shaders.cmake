@@ -64,6 +64,10 @@ tidepool_water_variants(TP_GLASS glass water_surface.frag water_surface_deferred
 tidepool_water_variants(TP_CLEAR_AMBIENT clear_ambient water_surface_deferred.comp water_surface_below.frag)
 # The resolve pass with the AO taken in it, at full and at half resolution.
 list(APPEND TIDEPOOL_SHADER_VARIANTS resolve.comp:TP_AO:resolve.ao.comp resolve.comp:TP_AO+TP_AO_UPSAMPLE:resolve.ao_upsample.comp)
+# The resolve over listed tiles (render/frame_resolve.hpp), each of the three.
+list(APPEND TIDEPOOL_SHADER_VARIANTS resolve.comp:TP_LISTED_TILES:resolve.listed.comp
+     resolve.comp:TP_AO+TP_LISTED_TILES:resolve.ao.listed.comp
+     resolve.comp:TP_AO+TP_AO_UPSAMPLE+TP_LISTED_TILES:resolve.ao_upsample.listed.comp)
 
 # The AO's apply pass that upsamples half-resolution AO as it applies it.
 list(APPEND TIDEPOOL_SHADER_VARIANTS ao_apply.comp:TP_UPSAMPLE:ao_apply.upsample.comp)

@@ -8,11 +8,14 @@
 // over the frame's RGBA32F colour costs about 10 ms at 1280x720 before it
 // does anything (docs/frame-skipping.md). With AO here the water drew zero
 // into the ambient image where it is seen, so AO darkens only the opaque
-// surfaces.
+// surfaces. Listed (TP_LISTED_TILES), it works on the tiles
+// screen_tile_list.comp listed, those whose pixels may differ from the last
+// frame's, and leaves the others' 8-bit pixels as they are.
 #include "shared/equirect.h"
 #include "shared/frame.h"
 #include "shared/haze.h"
 #include "shared/resolve.h"
+#include "shared/screen_tiles.h"
 #include "shared/specialization.h"
 #include "shared/ssao.h"
 #include "shared/tonemap.h"
@@ -22,7 +25,7 @@ layout(constant_id = TP_SPEC_HAZE) const bool kHaze = true;
 layout(constant_id = TP_SPEC_STORE_HDR) const bool kStoreHdr = true;
 layout(constant_id = TP_SPEC_WRITE_LDR) const bool kWriteLdr = true;
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = TP_SCREEN_TILE, local_size_y = TP_SCREEN_TILE) in;
 layout(binding = 0, rgba32f) uniform image2D colorImage;
 layout(binding = 1, rgba8) uniform writeonly image2D ldrImage;
 layout(binding = 2) uniform Frame { FrameUniforms frame; };
@@ -30,6 +33,9 @@ layout(binding = 3) uniform sampler2D depthTexture;
 layout(binding = 4) uniform sampler2D skyTexture;
 layout(binding = 5) uniform Medium { CameraMedium medium; };
 layout(push_constant) uniform Push { ResolveParams params; };
+#ifdef TP_LISTED_TILES
+layout(binding = 9) readonly buffer TileList { uint tileList[]; };  // screen_tile_list.comp's
+#endif
 #ifdef TP_AO
 layout(binding = 6, rgba16f) uniform readonly image2D ambientImage;
 #ifdef TP_AO_UPSAMPLE
@@ -61,8 +67,18 @@ vec3 hazedAt(ivec2 p, vec3 color) {
   return surface ? hazed(color, horizon, distance(world, camera), params.look.x) : horizon;
 }
 
+ivec2 pixel() {
+#ifndef TP_LISTED_TILES
+  return ivec2(gl_GlobalInvocationID.xy);
+#else
+  const uint tile = tileList[TP_SCREEN_TILE_LIST_HEADER + gl_WorkGroupID.x];
+  const uint perRow = (params.size.x + TP_SCREEN_TILE - 1u) / TP_SCREEN_TILE;
+  return ivec2(uvec2(tile % perRow, tile / perRow) * uint(TP_SCREEN_TILE) + gl_LocalInvocationID.xy);
+#endif
+}
+
 void main() {
-  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 p = pixel();
   if (any(greaterThanEqual(p, ivec2(params.size.xy)))) return;
   vec4 color = imageLoad(colorImage, p);
 #ifdef TP_AO

@@ -1,14 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The water surface seen from above, accurate refraction, shaded once per
-// pixel: one workgroup for each tile water_shading_tiles.comp listed, each
+// pixel: one workgroup for each tile screen_tile_list.comp listed, each
 // pixel the G-buffer pass drew this frame shaded from what it stored
 // (lib/water_gbuffer.glsl) as water_surface.frag shades it, into the frame.
 #define TP_NO_DERIVATIVES
 #include "lib/water_light.glsl"
 #include "lib/water_gbuffer.glsl"
+#include "shared/screen_tiles.h"
 
-layout(local_size_x = TP_WATER_SHADING_TILE, local_size_y = TP_WATER_SHADING_TILE) in;
+layout(local_size_x = TP_SCREEN_TILE, local_size_y = TP_SCREEN_TILE) in;
 layout(binding = 9, rgba32f) uniform writeonly image2D colorImage;
 // The G-buffer's targets, in lib/water_gbuffer.glsl's order.
 layout(binding = 10, rgba32f) uniform readonly image2D gbuffer0;
@@ -16,7 +17,7 @@ layout(binding = 11, rgba32f) uniform readonly image2D gbuffer1;
 layout(binding = 12, rgba32f) uniform readonly image2D gbuffer2;
 layout(binding = 13, rgba32f) uniform readonly image2D gbuffer3;
 layout(binding = 14, rgba32f) uniform readonly image2D gbuffer4;
-layout(binding = 15) readonly buffer TileList { uint tileList[]; };  // water_shading_tiles.comp's
+layout(binding = 15) readonly buffer TileList { uint tileList[]; };  // screen_tile_list.comp's
 #ifdef TP_CLEAR_AMBIENT
 // The opaque surfaces' ambient part, which the resolve pass takes AO from:
 // none where the water is seen.
@@ -24,8 +25,8 @@ layout(binding = 16, rgba16f) uniform writeonly image2D ambientImage;
 #endif
 
 void main() {
-  const uint tile = tileList[TP_WATER_SHADING_LIST_HEADER + gl_WorkGroupID.x];
-  const ivec2 p = ivec2(uvec2(tile % surface.grid.w, tile / surface.grid.w) * uint(TP_WATER_SHADING_TILE) +
+  const uint tile = tileList[TP_SCREEN_TILE_LIST_HEADER + gl_WorkGroupID.x];
+  const ivec2 p = ivec2(uvec2(tile % surface.grid.w, tile / surface.grid.w) * uint(TP_SCREEN_TILE) +
                         gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(colorImage)))) return;
   WaterGbufferTexels g;

@@ -17,6 +17,7 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(push_constant) uniform Push { WaterSurfaceParams surface; };
 layout(binding = 9) writeonly buffer TileTags { uint tileTags[]; };
 #include "lib/water_gbuffer.glsl"
+#include "shared/screen_tiles.h"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -36,6 +37,6 @@ void main() {
   target2 = g.t[2];
   target3 = g.t[3];
   target4 = g.t[4];
-  const uvec2 tile = uvec2(gl_FragCoord.xy) / uint(TP_WATER_SHADING_TILE);
+  const uvec2 tile = uvec2(gl_FragCoord.xy) / uint(TP_SCREEN_TILE);
   tileTags[tile.y * surface.grid.w + tile.x] = surface.grid.z;
 }

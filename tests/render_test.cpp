@@ -197,18 +197,20 @@ TEST_F(RenderTest, OnlyThePassesARequestNeedsAreRecorded) {
   // behind everything is drawn in the ground's pass. The AO made on the
   // first frame only: nothing opaque moves. The water deferred: its
   // G-buffer, tiles, shading and the side seen from below. The AO, the haze
-  // and the tonemap in the resolve, which runs for either image.
-  const std::vector<std::string> opaque{"ground copy", "pool",  "objects",     "water g-buffer",
-                                        "water tiles", "water", "water below", "resolve"};
+  // and the tonemap in the resolve, which runs for either image, over the
+  // tiles its list names.
+  const std::vector<std::string> opaque{"ground copy", "pool",        "objects",       "water g-buffer", "water tiles",
+                                        "water",       "water below", "resolve tiles", "resolve"};
   auto with = [&](std::vector<std::string> tail) {
     std::vector<std::string> all = opaque;
     all.insert(all.end(), tail.begin(), tail.end());
     return all;
   };
   auto hdrOnly = renderer.render({.hdr = true, .ldr = false});
-  const std::vector<std::string> first{"caustics",    "sky",   "ground",      "ground copy", "pool",
-                                       "objects",     "ssao",  "ao blur x",   "ao blur y",   "water g-buffer",
-                                       "water tiles", "water", "water below", "resolve",     "readback hdr"};
+  const std::vector<std::string> first{"caustics",    "sky",   "ground",      "ground copy",   "pool",
+                                       "objects",     "ssao",  "ao blur x",   "ao blur y",     "water g-buffer",
+                                       "water tiles", "water", "water below", "resolve tiles", "resolve",
+                                       "readback hdr"};
   EXPECT_EQ(names(hdrOnly), first);
   EXPECT_TRUE(hdrOnly.srgb.empty());
   auto both = renderer.render({.hdr = true, .ldr = true});

@@ -61,8 +61,13 @@ TEST_F(ShaderReloadTest, ReloadedShaderReachesThePipelinesAndABrokenOneKeepsTheO
   EXPECT_TRUE(gpu::reloadShaders(shaders).changed.empty()) << "the sources as built";
 
   // Half the exposure in the shader, against half the exposure in the scene.
-  // The resolve pass's source builds three modules (cmake/shaders.cmake).
-  const std::vector<std::string> modules{"resolve.ao.comp.spv", "resolve.ao_upsample.comp.spv", "resolve.comp.spv"};
+  // The resolve pass's source builds six modules (cmake/shaders.cmake).
+  const std::vector<std::string> modules{"resolve.ao.comp.spv",
+                                         "resolve.ao.listed.comp.spv",
+                                         "resolve.ao_upsample.comp.spv",
+                                         "resolve.ao_upsample.listed.comp.spv",
+                                         "resolve.comp.spv",
+                                         "resolve.listed.comp.spv"};
   std::string resolve = readText((shaders / "resolve.comp").string());
   const std::string exposure = "params.look.y)";
   ASSERT_NE(resolve.find(exposure), std::string::npos);

@@ -184,10 +184,10 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   // The default scene's frame after the first, pass by pass: simulate,
   // caustics, the ground's copy (the ground and the sky behind it are
   // cached), pool, objects, the water's four (deferred: G-buffer, tiles,
-  // shading, the side from below), the resolve (the AO applied, the haze)
-  // and the HDR readback; at each of the two sizes. The camera stands still:
-  // the AO made on the first frame stands.
-  EXPECT_EQ(table.rows, 2 * 11);
+  // shading, the side from below), the resolve's tile list and the resolve
+  // (the AO applied, the haze) and the HDR readback; at each of the two
+  // sizes. The camera stands still: the AO made on the first frame stands.
+  EXPECT_EQ(table.rows, 2 * 12);
   for (const char* pass : {"water", "simulate", "ground copy", "readback hdr"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }
@@ -198,14 +198,14 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
   r = runTidepool(
       "bench passes --validate --size 32x16 --frames 2 --set camera.turntable=20 --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(csvShape(csv).rows, 15);
+  EXPECT_EQ(csvShape(csv).rows, 16);
   for (const char* pass : {"ground ", "ssao", "ao blur y"}) {
     EXPECT_NE(r.out.find(pass), std::string::npos) << pass << " missing from:\n" << r.out;
   }
   // The viewer's frame reads nothing back: the same passes less the readback.
   r = runTidepool("bench passes --validate --size 32x16 --frames 2 --shown --csv " + csv + " --plot ''", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(csvShape(csv).rows, 10);
+  EXPECT_EQ(csvShape(csv).rows, 11);
   EXPECT_EQ(r.out.find("readback"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("resolve"), std::string::npos) << r.out;
   ScratchDir bad;

@@ -304,6 +304,97 @@ TEST_F(SkipTest, TheAoIsMadeAgainOnlyWhenTheOpaqueSurfacesMayHaveChanged) {
   }
 }
 
+// The resolve of a frame shown alone works on the tiles whose pixels may
+// differ from the last frame's (render/frame_resolve.hpp), and leaves the rest
+// of the 8-bit image as the last frame left it: each frame's 8-bit image is
+// the renderer's with nothing skipped, to the bit.
+namespace {
+
+struct StillStep {
+  std::string what;
+  std::function<void(render::Renderer&)> change;
+  bool hdr = false;
+  bool partly = true;  // the skipping renderer resolves some tiles, not all
+};
+
+void expectTheSameBits(const gpu::Context& ctx, const scene::Scene& s, const std::vector<StillStep>& steps) {
+  render::Renderer skipping(ctx, s, kWidth, kHeight);
+  render::Renderer everything(ctx, s, kWidth, kHeight, {.skipping = false});
+  for (uint32_t frame = 0; frame < steps.size(); ++frame) {
+    const StillStep& step = steps[frame];
+    SCOPED_TRACE(step.what + ", frame " + std::to_string(frame));
+    if (step.change) {
+      step.change(skipping);
+      step.change(everything);
+    }
+    const render::FrameRequest request{.frame = frame, .hdr = step.hdr, .ldr = true};
+    const auto a = skipping.render(request);
+    const auto b = everything.render(request);
+    EXPECT_TRUE(a.srgb == b.srgb);
+    ASSERT_GT(a.frameTiles, 0u);
+    EXPECT_EQ(b.frameTiles, 0u);
+    if (step.partly) {
+      EXPECT_LT(a.resolvedTiles, a.frameTiles);
+    } else {
+      EXPECT_EQ(a.resolvedTiles, a.frameTiles);
+    }
+  }
+}
+
+scene::Scene withoutAoOrShadows() {
+  scene::Scene s = scene::defaultScene();
+  s.ao.enabled = false;
+  s.render.shadows = false;
+  return s;
+}
+
+}  // namespace
+
+// From a camera low over the ground a crest over the rim stands against the
+// far ground, outside the pool's opening, and moves: where it was in the
+// last frame is resolved again.
+TEST_F(SkipTest, TheResolveOfAStillFrameTakesTheWaterWhereItWasAndIs) {
+  scene::Scene s = withoutAoOrShadows();
+  s.spheres.clear();
+  s.water.level = -0.02f;
+  s.water.drops = {{.x = 0.0f, .z = -0.6f, .radius = 0.35f, .amplitude = 0.5f, .frame = 0}};
+  s.camera.position = {0.0f, 0.25f, 4.0f};
+  s.camera.target = {0.0f, 0.25f, 0.0f};
+  std::vector<StillStep> steps{{.what = "first frame", .partly = false}};
+  for (int k = 0; k < 24; ++k) steps.push_back({.what = "the crest over the rim, falling"});
+  expectTheSameBits(ctx(), s, steps);
+  // The crest did stand over the rim.
+  render::Renderer r(ctx(), s, kWidth, kHeight);
+  r.render({.frame = 1, .hdr = false});
+  const std::vector<float> u = r.waterState().u;
+  EXPECT_GT(s.water.level + *std::max_element(u.begin(), u.end()), s.ground.height + 0.1f);
+}
+
+// A sphere dragged on the ground, with neither AO nor shadows to change the
+// rest of the frame, the pool out of view: where it was and where it is are
+// resolved again. A frame that stores its HDR colour, or whose camera moved,
+// resolves every tile.
+TEST_F(SkipTest, TheResolveOfAStillFrameTakesTheObjectsWhereTheyWereAndAre) {
+  scene::Scene s = withoutAoOrShadows();
+  s.camera.position = {0.0f, 1.2f, 5.0f};
+  s.camera.target = {0.0f, 0.3f, 10.0f};  // away from the pool
+  s.spheres.push_back({.center = {-1.0f, 0.3f, 9.0f}, .radius = 0.3f});
+  scene::Camera turned = s.camera;
+  turned.target = {0.3f, 0.3f, 10.0f};
+  const auto drag = [](glm::vec3 to) { return [to](render::Renderer& r) { r.moveSphere(1, to); }; };
+  expectTheSameBits(
+      ctx(), s,
+      {{.what = "first frame", .partly = false},
+       {.what = "still"},
+       {.what = "the sphere dragged right", .change = drag({1.0f, 0.3f, 9.0f})},
+       {.what = "still"},
+       {.what = "the HDR image read back", .hdr = true, .partly = false},
+       {.what = "after it"},
+       {.what = "the camera turned", .change = [&](render::Renderer& r) { r.setCamera(turned); }, .partly = false},
+       {.what = "still again"},
+       {.what = "the sphere dragged back", .change = drag({-1.0f, 0.3f, 9.0f})}});
+}
+
 // When the floor gives its depth and normal alone (render/pool.cpp).
 TEST(SkipFloor, TheFloorIsSeenOnlyThroughWaterOverItFromTheAirAwayFromTheWalls) {
   const scene::Scene s = scene::defaultScene();

@@ -292,8 +292,9 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   ProcessResult r = runViewer(
       "--size 160x90 --frames 9 --shader-dir '" + halved.string() + "' --script 4:reload --screenshot " + shot, dir);
   ASSERT_NO_FATAL_FAILURE(expectCleanRun(r));
-  EXPECT_NE(r.out.find("shader reload: 3 changed, 0 failed\n  resolve.ao.comp.spv\n  resolve.ao_upsample.comp.spv\n"
-                       "  resolve.comp.spv\n"),
+  EXPECT_NE(r.out.find("shader reload: 6 changed, 0 failed\n  resolve.ao.comp.spv\n  resolve.ao.listed.comp.spv\n"
+                       "  resolve.ao_upsample.comp.spv\n  resolve.ao_upsample.listed.comp.spv\n  resolve.comp.spv\n"
+                       "  resolve.listed.comp.spv\n"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(differingPixels(pngBytes(shot), frame8(half)), 0u);
@@ -305,7 +306,7 @@ TEST_F(ViewTest, ReloadKeyCompilesTheShadersAgainAndKeepsTheLastGoodCode) {
   EXPECT_NE(r.err.find("shader reload: resolve.comp.spv: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("resolve.comp:2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("validation: 0 warnings, 0 errors\n"), std::string::npos) << r.err;
-  EXPECT_NE(r.out.find("shader reload: 0 changed, 3 failed\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shader reload: 0 changed, 6 failed\n"), std::string::npos) << r.out;
   const std::vector<uint8_t> built = frame8(scene);
   EXPECT_EQ(differingPixels(pngBytes(kept), built), 0u);
   EXPECT_GT(differingPixels(built, frame8(half)), size_t(kWidth) * kHeight / 2);  // the halving shows

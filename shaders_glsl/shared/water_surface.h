@@ -14,14 +14,8 @@ struct WaterSurfaceParams {
                // z: the frame's tag, w: shading tiles per row (the deferred shading's: lib/water_gbuffer.glsl)
 };
 
-// The deferred shading of the surface seen from above works in square tiles
-// of this many pixels a side: those the surface covers are listed, and one
-// workgroup shades each.
-#define TP_WATER_SHADING_TILE 8
 // The water's G-buffer holds this many RGBA32F targets (lib/water_gbuffer.glsl).
 #define TP_WATER_GBUFFER_TARGETS 5
-// The list of tiles to shade: the indirect dispatch's arguments, then the tiles.
-#define TP_WATER_SHADING_LIST_HEADER 4
 
 // The medium around the camera, decided on the GPU where the water lives
 // (camera_medium.comp; render/water_model.cpp for the CPU reference) and read

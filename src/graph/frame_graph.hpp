@@ -70,6 +70,9 @@ class FrameGraph {
 
   // The host changed the resource's contents: cached passes reading it run again.
   void touch(ResourceRef ref);
+  // A number that changes whenever the resource is written or touched: asked
+  // as a pass records, it counts the writes of the passes recorded before it.
+  uint64_t versionOf(ResourceRef ref) const { return resources_.at(ref.index).version; }
   // The layout an image is in after the frames recorded so far.
   vk::ImageLayout layoutOf(ResourceRef ref) const { return resources_.at(ref.index).layout; }
   // Off: cached passes run every frame (a frame with nothing skipped, to compare against).

@@ -24,6 +24,8 @@ class Ground {
   Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs, vk::Extent2D frame,
          bool gbuffer);
   const shader::GroundParams& params() const { return params_; }
+  // The images the ground is drawn into, which each frame copies.
+  const SurfaceTargets& drawn() const { return own_; }
   // The ground's pass, with `sky` (Sky::background) drawn after the ground
   // in it, and its copy into `targets`. `outOfObjectShadows`, asked as each
   // frame records: no sphere's or box's shadow can fall on the ground

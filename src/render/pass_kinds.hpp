@@ -32,6 +32,7 @@ inline constexpr PassKind kWaterBelow{"water below"};
 inline constexpr PassKind kAov{"aov"};
 inline constexpr PassKind kReadbackNormal{"readback normal"};
 inline constexpr PassKind kReadbackPosition{"readback position"};
+inline constexpr PassKind kResolveTiles{"resolve tiles"};
 inline constexpr PassKind kResolve{"resolve"};
 inline constexpr PassKind kAntialias{"antialias"};
 inline constexpr PassKind kReadbackHdr{"readback hdr"};

@@ -31,6 +31,7 @@
 #include "shading/grid_detail.hpp"
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
+#include "shading/screen_rect.hpp"
 #include "shading/shadow_reach.hpp"
 #include "shading/water_model.hpp"
 #include "sim/water_driver.hpp"
@@ -124,7 +125,8 @@ struct Renderer::Resources {
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
     // The AO when it is taken after the water, the air between the camera
     // and every surface (the water's too), the tonemap.
-    resolve.emplace(ctx, scene, ao ? ao->forResolve(surfaces) : std::nullopt);
+    const std::optional<AoForResolve> aoInResolve = ao ? std::optional(ao->forResolve(surfaces)) : std::nullopt;
+    resolve.emplace(ctx, graph, scene, frame, aoInResolve, resolveTiles(scene, aoInResolve));
     if (options.aovs) {
       aovs.emplace(ctx, graph, frame, pool.has_value());
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
@@ -140,6 +142,50 @@ struct Renderer::Resources {
       resolve->declare(graph, surfaces, in, targets.ldr());
     }
     targets.declareReadbacks(graph);
+  }
+
+  // What lets the resolve work on the changed tiles alone: the water's
+  // tiles, and the inputs that change the pixels of the ground's copy. Not
+  // with nothing skipped, nor where a pass this does not follow draws over
+  // the frame: the AO applied before the water, glass, the apparent-depth
+  // mode's copy.
+  std::optional<ResolveTiles> resolveTiles(const scene::Scene& scene, const std::optional<AoForResolve>& aoIn) const {
+    const WaterDeferred* deferred = waterSurface ? waterSurface->deferred() : nullptr;
+    if (!skipping || !deferred || scene::hasGlass(scene) || apparentRefraction(scene) || (ao && !aoIn)) {
+      return std::nullopt;
+    }
+    ResolveTiles tiles{.water = deferred, .unchanged = {uniformsRef.ref, sky.image().ref, medium.buffer().ref}};
+    const SurfaceTargets& g = ground.drawn();
+    for (const GraphImage& image : {g.color, g.depth, g.normal, g.ambient}) {
+      if (image) tiles.unchanged.push_back(image.ref);
+    }
+    if (aoIn) {
+      tiles.unchanged.push_back(aoIn->ao.ref);
+      if (aoIn->upsample) tiles.unchanged.push_back(aoIn->lowViewDepth.ref);
+    }
+    return tiles;
+  }
+
+  // The pixels the pool and the objects in view may draw this frame.
+  PixelRect drawnOverTheGround(const shader::FrameUniforms& frame, glm::uvec2 size) const {
+    const glm::mat4& viewProjection = frame.viewProjection;
+    PixelRect drawn;
+    if (pool) {
+      // Over the ground, the pool is seen only through its opening: the
+      // ground, drawn first, hides the rest of it.
+      std::pair<glm::vec3, glm::vec3> box = poolBox;
+      if (frame.cameraPosition.y > box.second.y) box.first.y = box.second.y;
+      drawn = pixelsCovering(viewProjection, size, box.first, box.second);
+    }
+    for (const auto& sphere : opaqueInView.spheres) {
+      const glm::vec3 c(sphere.sphere), r(sphere.sphere.w);
+      drawn = united(drawn, pixelsCovering(viewProjection, size, c - r, c + r));
+    }
+    for (const auto& box : opaqueInView.boxes) {
+      const glm::vec3 c(box.center), r(glm::length(glm::vec3(box.halfSize)));  // any yaw
+      drawn = united(drawn, pixelsCovering(viewProjection, size, c - r, c + r));
+    }
+    return drawn;
   }
 
   // The water and what follows it: the simulation (its driver), the surface,
@@ -159,6 +205,8 @@ struct Renderer::Resources {
                {.cached = false, .runIf = [this] { return water->simulating(); }});
     medium.declare(graph, draw, in, [this] { return !skipping || cameraOverWater(live) || mediumMayNotBeAir; });
     pool.emplace(ctx, graph, scene, needs, objectUniforms);
+    const shader::PoolParams p = poolParams(scene);
+    poolBox = {{-p.box.x, shader::poolBottom(p), -p.box.x}, {p.box.x, p.box.y, p.box.x}};
     pool->declareCaustics(graph, draw, in);
   }
 
@@ -277,6 +325,9 @@ struct Renderer::Resources {
   std::optional<FrameResolve> resolve;
   std::optional<Aovs> aovs;  // when the renderer was made with them
   std::optional<MorphologicalAntialiasing> antialiasing;
+  // The pool's inside, floor to rim: the corners of the box the pool pass draws in.
+  std::pair<glm::vec3, glm::vec3> poolBox;
+  uint64_t frames = 0;  // rendered so far
   // Filled by render() for the frame being recorded.
   ObjectsInView opaqueInView;  // the opaque spheres and the boxes in view
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
@@ -418,6 +469,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
   res_->resolve->setWanted(request.hdr, request.ldr || request.present);
+  res_->resolve->setFrame(res_->frames++, res_->drawnOverTheGround(uniforms, {width_, height_}));
 
   gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it
@@ -451,6 +503,11 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   if (findPass(out.passes, passes::kCameraMedium)) res_->mediumMayNotBeAir = cameraOverWater(scene_);
   if (findPass(out.passes, passes::kSsao)) res_->aoGeometry = res_->geometry;
   out.waterAsleep = res_->water && !simulate;
+  if (findPass(out.passes, passes::kResolveTiles)) {
+    const FrameResolve::Resolved r = res_->resolve->lastResolved();
+    out.resolvedTiles = r.tiles;
+    out.frameTiles = r.of;
+  }
   out.waterEnergy = res_->water ? res_->water->energyPerArea() : 0.0;
   res_->readBack(request, out);
   return out;

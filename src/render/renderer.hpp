@@ -75,7 +75,11 @@ struct RenderedFrame {
   std::vector<RecordedPass> passes;
   gpu::CommandCounts counts;  // the whole frame's: the sum over `passes`
   bool waterAsleep = false;   // the water was drawn as it was, not simulated
-  double waterEnergy = 0.0;   // per unit area, after the last simulated frame (sim::WaterSleep's measure)
+  // The tiles the resolve pass worked on, of the frame's, where it works on
+  // listed tiles (render/frame_resolve.hpp); 0 of 0 where it works on the
+  // whole frame, or did not run.
+  uint32_t resolvedTiles = 0, frameTiles = 0;
+  double waterEnergy = 0.0;  // per unit area, after the last simulated frame (sim::WaterSleep's measure)
   glm::mat4 worldToCamera{1.0f};
   glm::mat4 worldToNDC{1.0f};
   glm::mat4 inverseProjection{1.0f};

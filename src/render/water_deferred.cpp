@@ -5,6 +5,7 @@
 #include "gpu/commands.hpp"
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
+#include "shared/screen_tiles.h"
 
 namespace tp::render {
 namespace {
@@ -14,7 +15,6 @@ constexpr vk::Format kWaterGbufferFormat = vk::Format::eR32G32B32A32Sfloat;
 // comes round to 1 again the tag texels are cleared, so no texel left from
 // the last round can pass for this frame's.
 constexpr uint32_t kLastTag = (1u << 24) - 1u;
-constexpr uint32_t kTile = TP_WATER_SHADING_TILE;
 
 gpu::GraphicsPipelineDesc gbufferPipeline() {
   return {.vertexShader = "water_surface.vert",
@@ -32,12 +32,11 @@ gpu::GraphicsPipelineDesc gbufferPipeline() {
 
 WaterDeferred::WaterDeferred(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs)
     : gbufferPipeline_(gpu::createGraphicsPipeline(ctx, gbufferPipeline())),
-      tilesPipeline_(gpu::createComputePipeline(ctx, "water_shading_tiles.comp", sizeof(glm::uvec4))),
+      tilesPipeline_(gpu::createComputePipeline(ctx, "screen_tile_list.comp", sizeof(shader::ScreenTileListParams))),
       shadePipeline_(gpu::createComputePipeline(ctx, fragmentVariant("water_surface_deferred.comp", needs),
                                                 sizeof(shader::WaterSurfaceParams), fragmentSpecialization(needs))),
       clearAmbient_(needs.clearAmbient),
-      tilesPerRow_((frame.width + kTile - 1) / kTile),
-      tiles_(tilesPerRow_ * ((frame.height + kTile - 1) / kTile)) {
+      tiles_(frame) {
   for (size_t i = 0; i < gbuffer_.size(); ++i) {
     const std::string name = "water g-buffer " + std::to_string(i);
     gbuffer_[i] = gpu::createImage2D(ctx, frame, kWaterGbufferFormat,
@@ -45,9 +44,10 @@ WaterDeferred::WaterDeferred(const gpu::Context& ctx, FrameGraph& graph, vk::Ext
     gbufferRefs_[i] = graph.image(name, gbuffer_[i]);
   }
   // Zero: no frame's tag.
-  tileTags_ = gpu::createFilledBuffer(ctx, std::vector<uint32_t>(tiles_, 0u), vk::BufferUsageFlagBits::eStorageBuffer,
-                                      gpu::MemoryUse::Device, "water shading tile tags");
-  tileList_ = gpu::createBuffer(ctx, (TP_WATER_SHADING_LIST_HEADER + tiles_) * sizeof(uint32_t),
+  tileTags_ =
+      gpu::createFilledBuffer(ctx, std::vector<uint32_t>(tiles_.count, 0u), vk::BufferUsageFlagBits::eStorageBuffer,
+                              gpu::MemoryUse::Device, "water shading tile tags");
+  tileList_ = gpu::createBuffer(ctx, (TP_SCREEN_TILE_LIST_HEADER + tiles_.count) * sizeof(uint32_t),
                                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer,
                                 gpu::MemoryUse::Device, "water shading tiles");
   tileTagsRef_ = graph.buffer("water shading tile tags", tileTags_);
@@ -57,7 +57,7 @@ WaterDeferred::WaterDeferred(const gpu::Context& ctx, FrameGraph& graph, vk::Ext
 shader::WaterSurfaceParams WaterDeferred::params(const WaterDraw& water) const {
   shader::WaterSurfaceParams p = water.params;
   p.grid.z = tag_;
-  p.grid.w = tilesPerRow_;
+  p.grid.w = tiles_.perRow;
   return p;
 }
 
@@ -93,7 +93,8 @@ void WaterDeferred::declare(FrameGraph& graph, const SurfaceTargets& targets, co
                         .storageBuffer(0, tileTagsRef_, Use::ComputeRead)
                         .storageBuffer(1, tileListRef_, Use::ComputeWrite);
     return [this, &set](PassContext& pc) {
-      gpu::bindPipeline(pc.cmd, tilesPipeline_, glm::uvec4(tag_, tiles_, 0u, 0u));
+      const shader::ScreenTileListParams params{.tags = {tag_, tag_, tiles_.count, tiles_.perRow}, .rect = {}};
+      gpu::bindPipeline(pc.cmd, tilesPipeline_, params);
       set.bind(pc.cmd, tilesPipeline_, pc.descriptors);
       gpu::dispatch(pc.cmd, 1);
     };

@@ -32,6 +32,8 @@ class WaterSurface {
   // The copy of the pool under the water, for the apparent-depth mode (else nothing).
   void declareUnderwater(FrameGraph& graph, const GraphImage& color) const;
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const PoolDraw& pool, const FrameInputs& in) const;
+  // The side seen from above shaded deferred; none when it is drawn forward.
+  const WaterDeferred* deferred() const { return deferred_ ? &*deferred_ : nullptr; }
 
  private:
   gpu::Pipeline below_;
