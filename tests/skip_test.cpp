@@ -312,7 +312,7 @@ namespace {
 
 struct StillStep {
   std::string what;
-  std::function<void(render::Renderer&)> change;
+  std::function<void(render::Renderer&)> change = {};
   bool hdr = false;
   bool partly = true;  // the skipping renderer resolves some tiles, not all
 };

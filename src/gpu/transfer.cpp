@@ -52,10 +52,18 @@ std::vector<std::byte> readBuffer(const Context& ctx, const Buffer& buffer, Acce
 }
 
 void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to) {
+  recordImageCopy(cmd, from, to, glm::uvec2(0u), glm::uvec2(from.extent.width, from.extent.height));
+}
+
+void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to, glm::uvec2 lo,
+                     glm::uvec2 hi) {
+  const vk::Offset3D at{int32_t(lo.x), int32_t(lo.y), 0};
   cmd.copyImage(from.handle(), vk::ImageLayout::eTransferSrcOptimal, to.handle(), vk::ImageLayout::eTransferDstOptimal,
                 vk::ImageCopy{.srcSubresource = {from.aspect, 0, 0, 1},
+                              .srcOffset = at,
                               .dstSubresource = {to.aspect, 0, 0, 1},
-                              .extent = {from.extent.width, from.extent.height, 1}});
+                              .dstOffset = at,
+                              .extent = {hi.x - lo.x, hi.y - lo.y, 1}});
 }
 
 }  // namespace tp::gpu

@@ -2,6 +2,8 @@
 #include <cstring>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "gpu/barriers.hpp"
 #include "gpu/memory.hpp"
 
@@ -36,5 +38,8 @@ std::vector<T> readBufferAs(const Context& ctx, const Buffer& buffer, Access src
 // Records the copy of the whole of `from` into `to`, of the same extent and
 // format: `from` in transfer-source layout, `to` in transfer-destination.
 void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to);
+// The same, over the pixels [lo, hi) alone.
+void recordImageCopy(const vk::raii::CommandBuffer& cmd, const Image& from, const Image& to, glm::uvec2 lo,
+                     glm::uvec2 hi);
 
 }  // namespace tp::gpu

@@ -64,6 +64,8 @@ UseInfo info(Use use) {
       return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
     case Use::TransferWrite:
       return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, false, true};
+    case Use::TransferWritePart:
+      return {{S::eCopy, A::eTransferWrite}, L::eTransferDstOptimal, true, true};
     case Use::HostData:
       return {{S::eVertexShader | S::eFragmentShader | S::eComputeShader, A::eUniformRead}, L::eGeneral, true, false};
   }
@@ -104,7 +106,8 @@ void FrameGraph::pass(const PassKind& kind, const std::function<Recorder(PassBui
   const std::string name(kind.name);
   for (const auto& [ref, use] : builder.uses_) {
     const Resource& r = at(ref);
-    if (!r.image && info(use).layout != L::eGeneral && use != Use::TransferRead && use != Use::TransferWrite) {
+    if (!r.image && info(use).layout != L::eGeneral && use != Use::TransferRead && use != Use::TransferWrite &&
+        use != Use::TransferWritePart) {
       throw std::logic_error("FrameGraph: pass " + name + " uses buffer " + r.name + " as an image");
     }
   }

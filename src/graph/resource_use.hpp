@@ -22,6 +22,7 @@ enum class Use {
   ComputeUniformRead,    // buffer read as a uniform buffer in the compute stage
   TransferRead,          // source of a copy
   TransferWrite,         // destination of a copy
+  TransferWritePart,     // destination of a copy that may leave part of it as it was
   HostData,              // a buffer the host fills, read as uniforms by any stage: no barrier (the submission
                          // makes host writes visible); declared so that cached passes see it change (touch())
 };

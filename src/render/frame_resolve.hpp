@@ -56,6 +56,8 @@ class FrameResolve {
     frame_ = number;
     drawn_ = drawn;
   }
+  // Whether the next frame's pass stores the HDR colour, changed in place.
+  bool storesHdr() const { return outputs() != kLdrOnly; }
   // The tiles the last frame resolved, of all its tiles (with ResolveTiles:
   // known once it has finished, read from the GPU).
   struct Resolved {

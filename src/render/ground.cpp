@@ -54,13 +54,15 @@ Ground::Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& s
 
 void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                      std::function<bool()> outOfObjectShadows,
-                     const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky) const {
+                     const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky,
+                     std::function<std::optional<PixelRect>()> copyOnly) const {
   graph.pass(passes::kGround,
              [this, in, outOfObjectShadows, &sky](PassBuilder& pass) {
                attachSurfaces(pass, own_, true);
                Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
                auto drawSky = sky(pass);
                return [this, &set, outOfObjectShadows, drawSky](PassContext& pc) {
+                 drawnSinceCopy_ = true;
                  const gpu::Pipeline& pipeline = unshadowed_ && outOfObjectShadows() ? *unshadowed_ : pipeline_;
                  drawSurfaces(pc.cmd, own_, true, [&] {
                    gpu::bindPipeline(pc.cmd, pipeline, params_);
@@ -71,17 +73,27 @@ void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fra
                };
              },
              {.cached = true, .runIf = {}});
-  graph.pass(passes::kGroundCopy, [this, targets](PassBuilder& pass) {
+  graph.pass(passes::kGroundCopy, [this, targets, copyOnly](PassBuilder& pass) {
     std::vector<std::pair<const gpu::Image*, const gpu::Image*>> copies;
+    // Copied in part, the targets keep the rest.
+    const Use write = copyOnly ? Use::TransferWritePart : Use::TransferWrite;
     auto copy = [&](const GraphImage& from, const GraphImage& to) {
-      if (from) copies.emplace_back(&pass.attach(from, Use::TransferRead), &pass.attach(to, Use::TransferWrite));
+      if (from) copies.emplace_back(&pass.attach(from, Use::TransferRead), &pass.attach(to, write));
     };
     copy(own_.color, targets.color);
     copy(own_.depth, targets.depth);
     copy(own_.normal, targets.normal);
     copy(own_.ambient, targets.ambient);
-    return [copies](PassContext& pc) {
-      for (const auto& [from, to] : copies) gpu::recordImageCopy(pc.cmd, *from, *to);
+    return [this, copies, copyOnly](PassContext& pc) {
+      const std::optional<PixelRect> only = copyOnly && !drawnSinceCopy_ ? copyOnly() : std::nullopt;
+      drawnSinceCopy_ = false;
+      for (const auto& [from, to] : copies) {
+        if (!only) {
+          gpu::recordImageCopy(pc.cmd, *from, *to);
+        } else if (!only->empty()) {
+          gpu::recordImageCopy(pc.cmd, *from, *to, only->lo, only->hi);
+        }
+      }
     };
   });
 }

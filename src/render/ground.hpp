@@ -12,6 +12,7 @@
 
 #include "render/surfaces.hpp"
 #include "scene/scene.hpp"
+#include "shading/screen_rect.hpp"
 #include "shared/ground.h"
 
 namespace tp::render {
@@ -30,9 +31,14 @@ class Ground {
   // in it, and its copy into `targets`. `outOfObjectShadows`, asked as each
   // frame records: no sphere's or box's shadow can fall on the ground
   // (groundOutOfObjectShadows), so it draws without their code.
+  // `copyOnly`, when given, is asked as each frame's copy records, unless
+  // the ground was drawn since the last copy: the pixels to copy, those the
+  // last frame drew over the ground (the rest hold the last copy's), or
+  // none for all.
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                std::function<bool()> outOfObjectShadows,
-               const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky) const;
+               const std::function<std::function<void(PassContext&)>(PassBuilder&)>& sky,
+               std::function<std::optional<PixelRect>()> copyOnly) const;
 
  private:
   shader::GroundParams params_;
@@ -41,6 +47,7 @@ class Ground {
   gpu::Pipeline pipeline_;
   // Without the spheres' and boxes' shadows; none when the scene's ground has none to leave out.
   std::optional<gpu::Pipeline> unshadowed_;
+  mutable bool drawnSinceCopy_ = true;  // the ground's images differ from what the frame's targets hold
 };
 
 }  // namespace tp::render

@@ -81,6 +81,7 @@ struct Renderer::Resources {
                          *samplers.equirect, *samplers.nearest, *samplers.clamp};
     const SurfaceTargets& surfaces = targets.surfaces();
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
+    stillInPart = stillFramesInPart(scene);
     sky.declareSky(graph);
     glossy.declare(graph, sky.image(), *samplers.equirect);
     ground.declare(
@@ -90,7 +91,8 @@ struct Renderer::Resources {
           return skipping && groundOutOfObjectShadows(u.shadows, glm::vec3(u.sunDirection), ground.params().plane.y,
                                                       ground.params().plane.w);
         },
-        [this, in](PassBuilder& pass) { return sky.background(pass, in); });
+        [this, in](PassBuilder& pass) { return sky.background(pass, in); },
+        stillInPart ? std::function<std::optional<PixelRect>()>([this] { return groundCopy; }) : nullptr);
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
         if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
@@ -126,7 +128,7 @@ struct Renderer::Resources {
     // The AO when it is taken after the water, the air between the camera
     // and every surface (the water's too), the tonemap.
     const std::optional<AoForResolve> aoInResolve = ao ? std::optional(ao->forResolve(surfaces)) : std::nullopt;
-    resolve.emplace(ctx, graph, scene, frame, aoInResolve, resolveTiles(scene, aoInResolve));
+    resolve.emplace(ctx, graph, scene, frame, aoInResolve, resolveTiles(aoInResolve));
     if (options.aovs) {
       aovs.emplace(ctx, graph, frame, pool.has_value());
       aovs->declare(graph, in, ground.params(), pool ? &pool->draw() : nullptr,
@@ -144,17 +146,23 @@ struct Renderer::Resources {
     targets.declareReadbacks(graph);
   }
 
+  // Whether a frame whose inputs outside what the pool, the objects and the
+  // water draw did not change since the last frame may copy the ground and
+  // resolve the frame in part. Not with nothing skipped, nor where a pass
+  // that is not followed draws over the frame: the AO applied before the
+  // water, glass, the apparent-depth mode's copy. Asked once the water is
+  // declared.
+  bool stillFramesInPart(const scene::Scene& scene) const {
+    return skipping && waterSurface && waterSurface->deferred() && !scene::hasGlass(scene) &&
+           !apparentRefraction(scene) && (!scene.ao.enabled || aoAfterWater(scene, skipping));
+  }
+
   // What lets the resolve work on the changed tiles alone: the water's
-  // tiles, and the inputs that change the pixels of the ground's copy. Not
-  // with nothing skipped, nor where a pass this does not follow draws over
-  // the frame: the AO applied before the water, glass, the apparent-depth
-  // mode's copy.
-  std::optional<ResolveTiles> resolveTiles(const scene::Scene& scene, const std::optional<AoForResolve>& aoIn) const {
-    const WaterDeferred* deferred = waterSurface ? waterSurface->deferred() : nullptr;
-    if (!skipping || !deferred || scene::hasGlass(scene) || apparentRefraction(scene) || (ao && !aoIn)) {
-      return std::nullopt;
-    }
-    ResolveTiles tiles{.water = deferred, .unchanged = {uniformsRef.ref, sky.image().ref, medium.buffer().ref}};
+  // tiles, and the inputs that change the pixels of the ground's copy.
+  std::optional<ResolveTiles> resolveTiles(const std::optional<AoForResolve>& aoIn) const {
+    if (!stillInPart) return std::nullopt;
+    ResolveTiles tiles{.water = waterSurface->deferred(),
+                       .unchanged = {uniformsRef.ref, sky.image().ref, medium.buffer().ref}};
     const SurfaceTargets& g = ground.drawn();
     for (const GraphImage& image : {g.color, g.depth, g.normal, g.ambient}) {
       if (image) tiles.unchanged.push_back(image.ref);
@@ -164,6 +172,19 @@ struct Renderer::Resources {
       if (aoIn->upsample) tiles.unchanged.push_back(aoIn->lowViewDepth.ref);
     }
     return tiles;
+  }
+
+  // The pixels frame `number` copies of the ground: those the last frame drew
+  // over it, when that was the frame before and left the rest as the ground's
+  // copy (it did not store its HDR colour, which the resolve changes in
+  // place); none for all. The water the last frame drew is under the highest
+  // wave its statistics saw.
+  std::optional<PixelRect> groundToCopy(uint64_t number, const glm::mat4& viewProjection, glm::uvec2 size) const {
+    if (!stillInPart || !lastFrame || lastFrame->number + 1 != number || lastFrame->storedHdr) return std::nullopt;
+    const glm::vec3 lo = poolBox.first, hi = poolBox.second;
+    const PixelRect water =
+        pixelsCovering(viewProjection, size, {lo.x, hi.y, lo.z}, {hi.x, std::max(hi.y, lastFrame->waterTop), hi.z});
+    return united(lastFrame->drawn, water);
   }
 
   // The pixels the pool and the objects in view may draw this frame.
@@ -327,7 +348,17 @@ struct Renderer::Resources {
   std::optional<MorphologicalAntialiasing> antialiasing;
   // The pool's inside, floor to rim: the corners of the box the pool pass draws in.
   std::pair<glm::vec3, glm::vec3> poolBox;
-  uint64_t frames = 0;  // rendered so far
+  uint64_t frames = 0;       // rendered so far
+  bool stillInPart = false;  // stillFramesInPart
+  // The last frame rendered, when it copied the ground: what groundToCopy needs of it.
+  struct LastFrame {
+    uint64_t number;
+    PixelRect drawn;  // drawnOverTheGround
+    float waterTop;   // sim::WaterDriver::top
+    bool storedHdr;   // its resolve stored the HDR colour
+  };
+  std::optional<LastFrame> lastFrame;
+  std::optional<PixelRect> groundCopy;  // the frame being recorded's groundToCopy
   // Filled by render() for the frame being recorded.
   ObjectsInView opaqueInView;  // the opaque spheres and the boxes in view
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
@@ -469,7 +500,10 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
   res_->resolve->setWanted(request.hdr, request.ldr || request.present);
-  res_->resolve->setFrame(res_->frames++, res_->drawnOverTheGround(uniforms, {width_, height_}));
+  const uint64_t number = res_->frames++;
+  const PixelRect drawn = res_->drawnOverTheGround(uniforms, {width_, height_});
+  res_->resolve->setFrame(number, drawn);
+  res_->groundCopy = res_->groundToCopy(number, uniforms.viewProjection, {width_, height_});
 
   gpu::GpuTimer timer(ctx_, uint32_t(res_->graph.passCount()));  // a scope per pass at most
   res_->descriptors.reset();  // the previous frame has finished: render() waits for it
@@ -503,6 +537,14 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   if (findPass(out.passes, passes::kCameraMedium)) res_->mediumMayNotBeAir = cameraOverWater(scene_);
   if (findPass(out.passes, passes::kSsao)) res_->aoGeometry = res_->geometry;
   out.waterAsleep = res_->water && !simulate;
+  res_->lastFrame.reset();
+  if (findPass(out.passes, passes::kGroundCopy)) {
+    res_->lastFrame =
+        Resources::LastFrame{.number = number,
+                             .drawn = drawn,
+                             .waterTop = res_->water ? res_->water->top() : 0.0f,
+                             .storedHdr = findPass(out.passes, passes::kResolve) && res_->resolve->storesHdr()};
+  }
   if (findPass(out.passes, passes::kResolveTiles)) {
     const FrameResolve::Resolved r = res_->resolve->lastResolved();
     out.resolvedTiles = r.tiles;
