@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "io/image_io.hpp"
 #include "io/water_state_file.hpp"
@@ -25,6 +27,37 @@ CsvShape csvShape(const std::string& path) {
   std::getline(in, shape.header);
   for (std::string line; std::getline(in, line);) ++shape.rows;
   return shape;
+}
+
+// A CSV line's fields; a quoted field (the device's name) may hold commas.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// A benchmark CSV's data rows, each field under its header's name.
+std::vector<std::map<std::string, std::string>> csvRows(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = csvFields(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = csvFields(line);
+    std::map<std::string, std::string>& row = rows.emplace_back();
+    for (size_t k = 0; k < names.size() && k < fields.size(); ++k) row[names[k]] = fields[k];
+  }
+  return rows;
 }
 
 }  // namespace
@@ -223,8 +256,9 @@ TEST(BenchCli, PassesBenchmarkWritesItsTableAndRefusesBadInput) {
 }
 
 // A sphere crossing a small pool at one speed, both immersions, both
-// forcings, two kappas: a row each, the smoothness measured; bad lists
-// refused with one line.
+// forcings, two kappas: a row each, the smoothness measured; the spread
+// forcing once per widening, a wider bump a lower crest; bad lists refused
+// with one line.
 TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   ScratchDir dir;
   const std::string csv = dir.file("wake.csv");
@@ -234,21 +268,30 @@ TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header,
-            "grid,speed_fraction,immersion,forcing,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,"
-            "trough_m,volume_change_m3,device")
+            "grid,speed_fraction,immersion,forcing,spread_depth_factor,grid_damping,steps,ms_per_step,high_share,"
+            "max_slope,crest_m,trough_m,volume_change_m3,device")
       << table.header;
   EXPECT_EQ(table.rows, 2 * 2 * 2);
   EXPECT_NE(r.out.find("submerged"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("spread"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
-  r = runTidepool("bench wake --sizes 32 --speeds 0.5 --grid-dampings 2 --forcings spread --csv " + csv + " --plot ''",
-                  dir);
+  r = runTidepool(
+      "bench wake --sizes 32 --speeds 0.5 --grid-dampings 2 --forcings spread --spread-depth-factors 0.65,4 "
+      "--csv " +
+          csv + " --plot ''",
+      dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(csvShape(csv).rows, 2);
+  const std::vector<std::map<std::string, std::string>> rows = csvRows(csv);
+  ASSERT_EQ(rows.size(), 2u * 2u);
   EXPECT_EQ(r.out.find("column"), std::string::npos) << r.out;
+  for (size_t k = 0; k < rows.size(); k += 2) {
+    EXPECT_EQ(rows[k].at("spread_depth_factor"), "0.65");
+    EXPECT_EQ(rows[k + 1].at("spread_depth_factor"), "4");
+    EXPECT_LT(std::stod(rows[k + 1].at("crest_m")), std::stod(rows[k].at("crest_m"))) << rows[k].at("immersion");
+  }
   ScratchDir bad;
   for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x", "--forcings chord",
-                             "--wave-speed 0", "--wave-speed x"}) {
+                             "--spread-depth-factors -1", "--wave-speed 0", "--wave-speed x"}) {
     expectCleanFailure(std::string("bench wake ") + option + " --csv " + bad.file("x.csv"), bad, {});
   }
   expectCleanFailure("bench wake --csv " + bad.file("x.txt"), bad, {});

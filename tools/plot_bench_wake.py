@@ -15,20 +15,24 @@ def main(csv_path, png_path):
     measures = [("high_share", "variance share above half Nyquist"), ("max_slope", "steepest slope"),
                 ("crest_m", "highest crest (m)")]
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
-    # One colour per forcing and grid damping (older CSVs have no forcing column: the column forcing).
-    series = sorted({(r.get("forcing", "column"), float(r["grid_damping"])) for r in rows})
+    # One colour per forcing, widening and grid damping (older CSVs have no
+    # forcing column: the column forcing; none has a widening for it).
+    def series_of(r):
+        return (r.get("forcing", "column"), r.get("spread_depth_factor", ""), float(r["grid_damping"]))
+
+    series = sorted({series_of(r) for r in rows})
     markers = {"half": "o", "submerged": "s"}
     colours = plt.get_cmap("viridis")
     for ax, (key, label) in zip(axes, measures):
-        for k, (forcing, kappa) in enumerate(series):
+        for k, (forcing, widening, kappa) in enumerate(series):
+            name = f"{forcing}, widening {widening}" if widening else forcing
             for immersion, marker in markers.items():
-                picked = [r for r in rows if (r.get("forcing", "column"), float(r["grid_damping"])) == (forcing, kappa)
-                          and r["immersion"] == immersion]
+                picked = [r for r in rows if series_of(r) == (forcing, widening, kappa) and r["immersion"] == immersion]
                 if not picked:
                     continue
                 ax.scatter([float(r["ms_per_step"]) for r in picked], [float(r[key]) for r in picked],
                            marker=marker, color=colours(k / max(1, len(series) - 1)),
-                           label=f"{forcing}, kappa {kappa:g}/s, {immersion}")
+                           label=f"{name}, kappa {kappa:g}/s, {immersion}")
                 for r in picked:
                     ax.annotate(f'{r["grid"]} {float(r["speed_fraction"]):g}c',
                                 (float(r["ms_per_step"]), float(r[key])), fontsize=6)
@@ -41,7 +45,7 @@ def main(csv_path, png_path):
     axes[1].axhline(1.0, color="red", lw=0.8)
     axes[2].axhline(0.1, color="red", lw=0.8)
     axes[0].legend(fontsize=7)
-    fig.suptitle(f"tidepool bench wake: a 0.45 m sphere crossing the default pool, on {device}")
+    fig.suptitle(f"tidepool bench wake: the default scene's sphere crossing its pool, on {device}")
     fig.tight_layout()
     fig.savefig(png_path, dpi=110, format="png")
 

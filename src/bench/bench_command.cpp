@@ -1,5 +1,6 @@
 #include "bench/bench_command.hpp"
 
+#include "base/number_text.hpp"
 #include "bench/bench_output.hpp"
 #include "cli/frame_size.hpp"
 #include "cli/gpu_session.hpp"
@@ -91,9 +92,12 @@ void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
                 inRange(0.0, 1e4));
   addListOption(wake, "--forcings", o.forcings, "Sphere forcings to compare (water.sphere_forcing)",
                 CLI::IsMember(scene::choices::kSphereForcing));
+  addListOption(wake, "--spread-depth-factors", o.spreadDepthFactors,
+                "The spread forcing's widening per metre of the body's depth, to compare (the free surface's: 0.65)",
+                inRange(0.0, 100.0));
   wake->add_option("--wave-speed", o.waveSpeed,
                    "The water's wave speed c in m/s; the sphere's speeds are fractions of it")
-      ->capture_default_str()
+      ->default_str(base::numberText(float(o.waveSpeed)))  // the scene's float, as written there
       ->check(inRange(0.05, 10.0));
   addOutputOptions(wake, o.csv, o.plot);
   addGpuOptions(wake, o.validate, o.device);

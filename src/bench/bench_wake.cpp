@@ -17,34 +17,42 @@ int runBenchWake(const BenchWakeOptions& o) {
 
   base::AtomicFile csvFile(o.csv);
   std::ofstream csv(csvFile.tempPath());
-  csv << "grid,speed_fraction,immersion,forcing,grid_damping,steps,ms_per_step,high_share,max_slope,crest_m,trough_m,"
-         "volume_change_m3,device\n";
-  std::printf("%5s %6s %-9s %-7s %6s %6s %8s %8s %7s %8s %8s\n", "grid", "speed", "immersion", "forcing", "kappa",
-              "steps", "ms/step", "high", "slope", "crest m", "trough m");
+  csv << "grid,speed_fraction,immersion,forcing,spread_depth_factor,grid_damping,steps,ms_per_step,high_share,"
+         "max_slope,crest_m,trough_m,volume_change_m3,device\n";
+  std::printf("%5s %6s %-9s %-7s %6s %6s %6s %8s %8s %7s %8s %8s\n", "grid", "speed", "immersion", "forcing", "widen",
+              "kappa", "steps", "ms/step", "high", "slope", "crest m", "trough m");
   for (const uint32_t grid : o.sizes) {
     for (const double speed : o.speeds) {
       for (const bool submerged : {false, true}) {
-        for (const std::string& forcing : o.forcings) {
-          for (const double kappa : o.gridDampings) {
-            const sim::WakeCase c{.grid = grid,
-                                  .speedFraction = speed,
-                                  .submerged = submerged,
-                                  .gridDamping = kappa,
-                                  .forcing = sim::parseSphereForcing(forcing),
-                                  .waveSpeed = o.waveSpeed};
-            std::fprintf(stderr, "bench wake: grid %u, %.2f c, %s, %s forcing, kappa %g\n", grid, speed,
-                         submerged ? "submerged" : "half in", forcing.c_str(), kappa);
-            const sim::WakeResult r = sim::runWake(ctx, c);
-            const char* immersion = submerged ? "submerged" : "half";
-            const sim::WakeMeasures& m = r.measures;
-            std::printf("%5u %5.2fc %-9s %-7s %6g %6llu %8.3f %8.4f %7.3f %8.4f %8.4f\n", grid, speed, immersion,
-                        forcing.c_str(), kappa, static_cast<unsigned long long>(r.steps), 1e3 * r.secondsPerStep,
-                        m.highShare, m.maxSlope, m.crest, m.trough);
-            csv << grid << "," << speed << "," << immersion << "," << forcing << "," << kappa << "," << r.steps << ","
-                << formatNumber("%.6g", 1e3 * r.secondsPerStep) << "," << formatNumber("%.6g", m.highShare) << ","
-                << formatNumber("%.6g", m.maxSlope) << "," << formatNumber("%.6g", m.crest) << ","
-                << formatNumber("%.6g", m.trough) << "," << formatNumber("%.3g", r.volumeChange) << ",\""
-                << ctx.deviceName() << "\"\n";
+        for (const std::string& name : o.forcings) {
+          const sim::SphereForcing forcing = sim::parseSphereForcing(name);
+          const bool spread = forcing == sim::SphereForcing::Spread;
+          // The column forcing has no widening: one run with the default's.
+          const std::vector<double> widenings = spread ? o.spreadDepthFactors : std::vector{sim::kSpreadDepthFactor};
+          for (const double widening : widenings) {
+            for (const double kappa : o.gridDampings) {
+              const sim::WakeCase c{.grid = grid,
+                                    .speedFraction = speed,
+                                    .submerged = submerged,
+                                    .gridDamping = kappa,
+                                    .forcing = forcing,
+                                    .spreadDepthFactor = widening,
+                                    .waveSpeed = o.waveSpeed};
+              const std::string widen = spread ? formatNumber("%.3g", widening) : "-";
+              std::fprintf(stderr, "bench wake: grid %u, %.2f c, %s, %s forcing, widening %s, kappa %g\n", grid, speed,
+                           submerged ? "submerged" : "half in", name.c_str(), widen.c_str(), kappa);
+              const sim::WakeResult r = sim::runWake(ctx, c);
+              const char* immersion = submerged ? "submerged" : "half";
+              const sim::WakeMeasures& m = r.measures;
+              std::printf("%5u %5.2fc %-9s %-7s %6s %6g %6llu %8.3f %8.4f %7.3f %8.4f %8.4f\n", grid, speed, immersion,
+                          name.c_str(), widen.c_str(), kappa, static_cast<unsigned long long>(r.steps),
+                          1e3 * r.secondsPerStep, m.highShare, m.maxSlope, m.crest, m.trough);
+              csv << grid << "," << speed << "," << immersion << "," << name << "," << (spread ? widen : "") << ","
+                  << kappa << "," << r.steps << "," << formatNumber("%.6g", 1e3 * r.secondsPerStep) << ","
+                  << formatNumber("%.6g", m.highShare) << "," << formatNumber("%.6g", m.maxSlope) << ","
+                  << formatNumber("%.6g", m.crest) << "," << formatNumber("%.6g", m.trough) << ","
+                  << formatNumber("%.3g", r.volumeChange) << ",\"" << ctx.deviceName() << "\"\n";
+            }
           }
         }
       }

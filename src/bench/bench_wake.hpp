@@ -12,7 +12,9 @@ struct BenchWakeOptions {
   std::vector<double> speeds{0.2, 0.5, 0.9};              // of the wave speed
   std::vector<double> gridDampings{0.0, 2.0, 5.0};        // kappa, 1/s
   std::vector<std::string> forcings{"column", "spread"};  // the forcing methods compared
-  double waveSpeed = sim::WakeCase{}.waveSpeed;           // c, m/s: the default scene's
+  // The spread forcing's widening per metre of depth; the column forcing has none.
+  std::vector<double> spreadDepthFactors{sim::kSpreadDepthFactor};
+  double waveSpeed = sim::WakeCase{}.waveSpeed;  // c, m/s: the default scene's
   std::string csv = "bench_wake.csv";
   std::string plot = "bench_wake.png";
   bool validate = false;
@@ -24,6 +26,7 @@ struct BenchWakeOptions {
 // grid size, speed, grid damping and forcing: the share of the height variance above
 // half the Nyquist wavenumber, the steepest slope, the highest crest and
 // deepest trough against the wall milliseconds per step (forcing and step).
+// The spread forcing runs once per widening in spreadDepthFactors.
 // A table, CSV and a plot.
 int runBenchWake(const BenchWakeOptions& options);
 

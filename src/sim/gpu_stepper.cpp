@@ -260,7 +260,7 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
                               .h = float(params_.h()),
                               .markStep = uint32_t(stepIndex_),
                               .wrap = params_.boundary == Boundary::Wrap ? 1u : 0u,
-                              .spreadDepth = float(kSpreadDepthFactor),
+                              .spreadDepth = float(params_.spreadDepthFactor),
                               .pad0 = 0.0f,
                               .pad1 = 0.0f,
                               .pad2 = 0.0f};

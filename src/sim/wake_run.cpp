@@ -20,7 +20,8 @@ WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {
                            .waveSpeed = c.waveSpeed,
                            .damping = c.damping,
                            .gridDamping = c.gridDamping,
-                           .sphereForcing = c.forcing};
+                           .sphereForcing = c.forcing,
+                           .spreadDepthFactor = c.spreadDepthFactor};
   validate(params);
   const double dt = c.frameTime / substepsFor(params, c.frameTime);
   const double speed = c.speedFraction * c.waveSpeed;

@@ -17,9 +17,11 @@ struct WakeCase {
   bool submerged = false;      // fully under, its top kSubmergedClearance below the level; else half in
   double gridDamping = scene::Water{}.gridDamping;  // kappa, 1/s: the scenes' default
   SphereForcing forcing = SphereForcing::Column;
-  // The default scene's pool and sphere: a 4 m square, c = 0.6 m/s,
-  // gamma = 0.3/s, a sphere of 0.45 m crossing 2.8 m along x at 30 frames/s.
-  double extent = 4.0, waveSpeed = 0.6, damping = 0.3, radius = 0.45, crossing = 2.8, frameTime = 1.0 / 30.0;
+  double spreadDepthFactor = kSpreadDepthFactor;  // the spread forcing's widening per metre of depth
+  // The default scene's pool, water and sphere (a 4 m square, c = 0.6 m/s,
+  // gamma = 0.3/s, 30 frames/s, a sphere of 0.4 m), the sphere crossing 2.8 m along x.
+  double extent = scene::Water{}.extent, waveSpeed = scene::Water{}.waveSpeed, damping = scene::Water{}.damping,
+         radius = scene::Scene{}.spheres.front().radius, crossing = 2.8, frameTime = scene::Water{}.frameTime;
 };
 
 // How far below the level a submerged sphere's top runs, in metres.

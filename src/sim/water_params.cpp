@@ -29,6 +29,8 @@ void validate(const WaterParams& p) {
   require(std::isfinite(p.maxSlope) && p.maxSlope >= 0.0, "max slope must be >= 0 and finite, got " + fmt(p.maxSlope));
   require(std::isfinite(p.gridDamping) && p.gridDamping >= 0.0,
           "grid damping must be >= 0 and finite, got " + fmt(p.gridDamping));
+  require(std::isfinite(p.spreadDepthFactor) && p.spreadDepthFactor >= 0.0,
+          "spread depth factor must be >= 0 and finite, got " + fmt(p.spreadDepthFactor));
   require(p.spillHeight > 0.0, "spill height (the rim over the rest level) must be > 0, got " + fmt(p.spillHeight));
 }
 

@@ -38,6 +38,10 @@ struct WaterParams {
   // that would rise above it stays at it (its water spills out of the pool).
   double spillHeight = std::numeric_limits<double>::infinity();
   SphereForcing sphereForcing = SphereForcing::Column;
+  // The spread forcing's widening per metre of the body's depth: the free
+  // surface's (kSpreadDepthFactor) in scenes; `bench wake` varies it to show
+  // how the crest answers a wider bump (docs/water-numerics.md).
+  double spreadDepthFactor = kSpreadDepthFactor;
 
   double h() const { return extent / n; }
   double lambda(double dt) const { return waveSpeed * dt / h(); }
