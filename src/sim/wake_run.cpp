@@ -14,26 +14,37 @@ constexpr uint64_t kStepsPerSubmit = 256;  // keeps command buffers small on lon
 
 }  // namespace
 
+WaterParams waterParams(const WakeCase& c) {
+  return {.n = c.grid,
+          .extent = c.extent,
+          .waveSpeed = c.waveSpeed,
+          .damping = c.damping,
+          .boundary = c.boundary,
+          .gridDamping = c.gridDamping,
+          .sphereForcing = c.forcing,
+          .spreadDepthFactor = c.spreadDepthFactor};
+}
+
 WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {
-  const WaterParams params{.n = c.grid,
-                           .extent = c.extent,
-                           .waveSpeed = c.waveSpeed,
-                           .damping = c.damping,
-                           .gridDamping = c.gridDamping,
-                           .sphereForcing = c.forcing,
-                           .spreadDepthFactor = c.spreadDepthFactor};
+  const WaterParams params = waterParams(c);
   validate(params);
   const double dt = c.frameTime / substepsFor(params, c.frameTime);
   const double speed = c.speedFraction * c.waveSpeed;
   const double y = c.submerged ? -(c.radius + kSubmergedClearance) : 0.0;
   // Along x through the middle, a little off the grid's lines and axis.
   const double x0 = 0.5 * (c.extent - c.crossing), z = 0.5 * c.extent + 0.1;
+  // With walls the sphere stops at the crossing's end; round a wrapped grid
+  // it moves as far every step, the last one too (a steady motion).
+  const bool wrap = c.boundary == Boundary::Wrap;
   const auto centreAt = [&](uint64_t step) {
-    const double x = std::min(x0 + speed * dt * double(step), x0 + c.crossing);
+    const double ahead = x0 + speed * dt * double(step);
+    const double x = wrap ? ahead - c.extent * std::floor(ahead / c.extent) : std::min(ahead, x0 + c.crossing);
     return glm::vec3(float(x), float(y), float(z));
   };
   WakeResult r;
   r.steps = uint64_t(std::ceil(c.crossing / (speed * dt)));
+  r.dt = dt;
+  r.endCentre = centreAt(r.steps);
   GpuStepper stepper(ctx, params, flatState(c.grid), StepKernel::OnePerDispatch);
   const auto start = std::chrono::steady_clock::now();
   for (uint64_t done = 0; done < r.steps; done += kStepsPerSubmit) {
@@ -56,7 +67,7 @@ WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {
   r.submergedVolume = sphereCapVolume(c.radius, y, 0.0);
   r.volumeChange = heights;  // the sphere starts and ends as deep, inside the grid: the same submerged volume
   std::vector<WaterlineDisc> hidden;
-  if (!c.submerged) hidden.push_back({double(centreAt(r.steps).x), z, c.radius});
+  if (!c.submerged) hidden.push_back({double(r.endCentre.x), z, c.radius});
   r.measures = measureWake(r.state, c.extent, 0.0, hidden);
   return r;
 }

@@ -17,6 +17,9 @@ struct WakeCase {
   bool submerged = false;      // fully under, its top kSubmergedClearance below the level; else half in
   double gridDamping = scene::Water{}.gridDamping;  // kappa, 1/s: the scenes' default
   SphereForcing forcing = SphereForcing::Column;
+  // Wrap: the grid wraps round and the sphere with it, to cross it again and
+  // again (its wake then settles into sim/steady_wake.hpp's).
+  Boundary boundary = Boundary::Clamp;
   double spreadDepthFactor = kSpreadDepthFactor;  // the spread forcing's widening per metre of depth
   // The default scene's pool, water and sphere (a 4 m square, c = 0.6 m/s,
   // gamma = 0.3/s, 30 frames/s, a sphere of 0.4 m), the sphere crossing 2.8 m along x.
@@ -31,12 +34,17 @@ struct WakeResult {
   WaterState state;  // after the crossing, u relative to the rest level 0
   WakeMeasures measures;
   uint64_t steps = 0;
+  double dt = 0.0;              // seconds a step
+  glm::vec3 endCentre{};        // where the sphere stands after the last step
   double secondsPerStep = 0.0;  // wall, forcing and step, the submissions waited for
   // The water's own volume (heights times h^2 minus the sphere's submerged
   // volume) after the crossing, less before: zero but for float round-off.
   double volumeChange = 0.0;
   double submergedVolume = 0.0;  // the sphere's, below the level (closed form)
 };
+
+// The water the case's crossing runs in.
+WaterParams waterParams(const WakeCase& c);
 
 // Runs the crossing on `ctx` from still water: each step moves the sphere
 // by its speed times dt (the case's forcing displaces the water), then steps.
