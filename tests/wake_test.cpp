@@ -42,40 +42,65 @@ double refinementRatio(const gpu::Context& ctx, sim::SphereForcing forcing) {
   return coarse / fine;
 }
 
+// Runs `c` and checks what docs/water-numerics.md claims of it: under 2% of
+// the height variance above half the Nyquist wavenumber at every speed and
+// immersion with either forcing (the old centre-sampled forcing left 26-41%),
+// and the water's volume kept. The spread forcing keeps the steepest slope
+// under 1 and the crest under 0.1 m at 0.2 c and 0.5 c, half in or wholly
+// under; the column forcing keeps the crest under 0.1 m at 0.2 c and the
+// slope under 1 at 0.2 c (half in on every grid, under up to 128 cells)
+// and, half in, at 0.5 c on 64 (1.04 on 128: its waterline's slope grows as
+// the grid is refined). At 0.9 c the crest is the wave equation's answer to
+// a body moving near the wave speed (the steady wake's, below), and at the
+// column forcing's waterline the slope is the chord's: only the smoothness
+// is asserted there.
+void expectSmooth(const gpu::Context& ctx, const sim::WakeCase& c) {
+  const sim::WakeResult r = sim::runWake(ctx, c);
+  print(c, r);
+  SCOPED_TRACE(sim::toString(c.forcing) + ", " + std::to_string(c.grid) + " cells, " + std::to_string(c.speedFraction) +
+               " c" + (c.submerged ? ", submerged" : ", half in"));
+  EXPECT_LT(r.measures.highShare, 0.02);
+  EXPECT_LT(std::abs(r.volumeChange), 1e-5 * r.submergedVolume);
+  const bool spread = c.forcing == sim::SphereForcing::Spread;
+  const bool columnSlopeBound = (c.speedFraction == 0.2 && (c.grid <= 128 || !c.submerged)) ||
+                                (c.speedFraction == 0.5 && !c.submerged && c.grid == 64);
+  if ((spread && c.speedFraction <= 0.5) || (!spread && columnSlopeBound)) {
+    EXPECT_LT(r.measures.maxSlope, 1.0);
+  }
+  if (c.speedFraction == 0.2 || (spread && c.speedFraction == 0.5)) {
+    EXPECT_LT(r.measures.crest, 0.1);
+  }
+}
+
 }  // namespace
 
 using Wake = GpuTest;
 
-// Under 2% of the height variance above half the Nyquist wavenumber at every
-// speed and immersion, with either forcing, on grids of 64 and 128 cells
-// (the old centre-sampled forcing left 26-41% there), and the water's
-// volume kept. The spread forcing keeps the steepest slope under 1 and the
-// crest under 0.1 m at 0.2 c and 0.5 c, half in or wholly under; the column
-// forcing keeps the slope under 1 at 0.2 c and, half in, at 0.5 c on 64 cells
-// (1.04 on 128: its waterline's slope grows as the grid is refined), the
-// crest at 0.2 c. At 0.9 c the crest is the wave equation's answer to a body
-// moving near the wave speed, and at the column forcing's waterline the
-// slope is the chord's (docs/water-numerics.md): only the smoothness is
-// asserted there.
+// The default crossing (2.8 m) on grids of 64 and 128 cells, with either
+// forcing, at 0.2, 0.5 and 0.9 c, half in and wholly under.
 TEST_F(Wake, SmoothAtEverySpeedAndImmersion) {
   for (const sim::SphereForcing forcing : {sim::SphereForcing::Column, sim::SphereForcing::Spread}) {
-    const bool spread = forcing == sim::SphereForcing::Spread;
     for (const uint32_t grid : {64u, 128u}) {
       for (const double speed : {0.2, 0.5, 0.9}) {
         for (const bool submerged : {false, true}) {
-          const sim::WakeCase c{.grid = grid, .speedFraction = speed, .submerged = submerged, .forcing = forcing};
-          const sim::WakeResult r = sim::runWake(ctx(), c);
-          print(c, r);
-          SCOPED_TRACE(sim::toString(forcing) + ", " + std::to_string(grid) + " cells, " + std::to_string(speed) +
-                       " c" + (submerged ? ", submerged" : ", half in"));
-          EXPECT_LT(r.measures.highShare, 0.02);
-          EXPECT_LT(std::abs(r.volumeChange), 1e-5 * r.submergedVolume);
-          if (speed == 0.2 || (speed == 0.5 && (spread || (!submerged && grid == 64)))) {
-            EXPECT_LT(r.measures.maxSlope, 1.0);
-          }
-          if (speed == 0.2 || (speed == 0.5 && spread)) {
-            EXPECT_LT(r.measures.crest, 0.1);
-          }
+          expectSmooth(ctx(), {.grid = grid, .speedFraction = speed, .submerged = submerged, .forcing = forcing});
+        }
+      }
+    }
+  }
+}
+
+// The same on 256 and 512 cells, over half the crossing (1.4 m) to keep the
+// run short: either forcing on 256, the scenes' spread forcing on 512.
+TEST_F(Wake, SmoothOnFineGrids) {
+  for (const sim::SphereForcing forcing : {sim::SphereForcing::Column, sim::SphereForcing::Spread}) {
+    for (const uint32_t grid : {256u, 512u}) {
+      if (grid == 512 && forcing == sim::SphereForcing::Column) continue;
+      for (const double speed : {0.2, 0.5, 0.9}) {
+        for (const bool submerged : {false, true}) {
+          expectSmooth(
+              ctx(),
+              {.grid = grid, .speedFraction = speed, .submerged = submerged, .forcing = forcing, .crossing = 1.4});
         }
       }
     }
