@@ -73,7 +73,7 @@ ivec2 pixel() {
 #else
   const uint tile = tileList[TP_SCREEN_TILE_LIST_HEADER + gl_WorkGroupID.x];
   const uint perRow = (params.size.x + TP_SCREEN_TILE - 1u) / TP_SCREEN_TILE;
-  return ivec2(uvec2(tile % perRow, tile / perRow) * uint(TP_SCREEN_TILE) + gl_LocalInvocationID.xy);
+  return ivec2(screenTileAt(tile, perRow) * uint(TP_SCREEN_TILE) + gl_LocalInvocationID.xy);
 #endif
 }
 

@@ -15,7 +15,7 @@ layout(push_constant) uniform Push { ScreenTileListParams params; };
 shared uint listed;
 
 bool inRect(uint t) {
-  const uvec2 tile = uvec2(t % params.tags.w, t / params.tags.w);
+  const uvec2 tile = screenTileAt(t, params.tags.w);
   return all(greaterThanEqual(tile, params.rect.xy)) && all(lessThan(tile, params.rect.zw));
 }
 

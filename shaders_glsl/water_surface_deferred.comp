@@ -26,8 +26,7 @@ layout(binding = 16, rgba16f) uniform writeonly image2D ambientImage;
 
 void main() {
   const uint tile = tileList[TP_SCREEN_TILE_LIST_HEADER + gl_WorkGroupID.x];
-  const ivec2 p = ivec2(uvec2(tile % surface.grid.w, tile / surface.grid.w) * uint(TP_SCREEN_TILE) +
-                        gl_LocalInvocationID.xy);
+  const ivec2 p = ivec2(screenTileAt(tile, surface.grid.w) * uint(TP_SCREEN_TILE) + gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(colorImage)))) return;
   WaterGbufferTexels g;
   g.t[0] = imageLoad(gbuffer0, p);

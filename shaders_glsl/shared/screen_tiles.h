@@ -13,6 +13,9 @@ TP_BEGIN
 // A list: the indirect dispatch's x, y, z and a pad, then the tiles.
 #define TP_SCREEN_TILE_LIST_HEADER 4
 
+// Tile t's column and row among the frame's tiles, `perRow` to a row.
+TP_INLINE uvec2 screenTileAt(uint t, uint perRow) { return uvec2(t % perRow, t / perRow); }
+
 // screen_tile_list.comp's push constants. A tile is listed when its tag is
 // one of two frames' (a tile never tagged holds 0, no frame's tag) or it lies
 // in the rectangle.
