@@ -106,8 +106,9 @@ void FrameGraph::pass(const PassKind& kind, const std::function<Recorder(PassBui
   const std::string name(kind.name);
   for (const auto& [ref, use] : builder.uses_) {
     const Resource& r = at(ref);
-    if (!r.image && info(use).layout != L::eGeneral && use != Use::TransferRead && use != Use::TransferWrite &&
-        use != Use::TransferWritePart) {
+    // A buffer may be a copy's end; else only uses in the general layout fit it.
+    const UseInfo u = info(use);
+    if (!r.image && u.layout != L::eGeneral && u.access.stage != S::eCopy) {
       throw std::logic_error("FrameGraph: pass " + name + " uses buffer " + r.name + " as an image");
     }
   }
