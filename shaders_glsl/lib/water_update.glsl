@@ -5,6 +5,12 @@
 #define TP_LIB_WATER_UPDATE
 #include "shared/water.h"
 
+// How far a height difference lies beyond +-limit (0 within it); odd in the
+// difference, so the two cells of an edge see the same excess, negated.
+float waterSlopeExcess(float difference, float limit) {
+  return difference - clamp(difference, -limit, limit);
+}
+
 // New (u, v) of a cell from its height u, velocity v and the heights and
 // velocities of its west, east, south and north neighbours (ghost cells
 // already resolved); `atWall`: the cell lies along the grid's edge.
@@ -24,11 +30,16 @@ vec2 waterUpdate(WaterStepParams p, float u, float v, vec4 uWESN, vec4 vWESN, bo
   // Symplectic Euler moves u with the new velocity; the literal forward Euler
   // (kept to show that it is unstable) with the old one.
   precise float uNew = u + p.dt * (p.scheme == TP_WATER_SCHEME_EXPLICIT ? v : vNew);
-  if (p.maxOffset > 0.0) {
-    // Offset from the 4-neighbour average, limited to maxSlope * h; cells within
-    // the limit keep their value to the bit.
-    precise float offset = (uNew - u) - 0.25 * laplacianH2;
-    if (abs(offset) > p.maxOffset) uNew = u + (0.25 * laplacianH2 + sign(offset) * p.maxOffset);
+  if (p.maxDifference > 0.0) {
+    // The slope limiter (docs/water-numerics.md): across each edge whose two
+    // heights differ by more than maxSlope * h, slopeShare of the excess flows
+    // down. What one cell loses its neighbour gains (the neighbour computes
+    // the same difference, negated exactly), so the volume is kept; cells
+    // whose four edges are within the limit keep their value to the bit.
+    const float m = p.maxDifference;
+    precise float moved = (waterSlopeExcess(u - uWESN.x, m) + waterSlopeExcess(u - uWESN.y, m)) +
+                          (waterSlopeExcess(u - uWESN.z, m) + waterSlopeExcess(u - uWESN.w, m));
+    uNew = uNew - p.slopeShare * moved;
   }
   // Along the pool's walls, water over the rim leaves the pool: the cell
   // keeps the rim's height and stops rising (docs/water-numerics.md, "The rim").

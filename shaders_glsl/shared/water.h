@@ -27,18 +27,18 @@ struct WaterCell {
 
 // Push constants of water_step.comp and water_step_tiled.comp.
 struct WaterStepParams {
-  uint n;            // grid side (n x n cells)
-  uint boundary;     // TP_WATER_BOUNDARY_*
-  uint scheme;       // TP_WATER_SCHEME_*
-  uint steps;        // steps this dispatch takes (tiled shader: at most its halo)
-  float dt;          // seconds per step
-  float waveFactor;  // dt * c^2 / h^2
-  float damping;     // exp(-gamma * dt), the per-step velocity factor
-  float maxOffset;   // maxSlope * h: bound on u minus its 4-neighbour average; <= 0: off
-  float gridDamping; // kappa * dt: v gains this times the sum of its differences to its 4 neighbours
-  float spillHeight; // clamp boundary: a cell along a wall higher than this spills down to it
-  uint pad1;
-  uint pad2;
+  uint n;              // grid side (n x n cells)
+  uint boundary;       // TP_WATER_BOUNDARY_*
+  uint scheme;         // TP_WATER_SCHEME_*
+  uint steps;          // steps this dispatch takes (tiled shader: at most its halo)
+  float dt;            // seconds per step
+  float waveFactor;    // dt * c^2 / h^2
+  float damping;       // exp(-gamma * dt), the per-step velocity factor
+  float maxDifference; // maxSlope * h: neighbours further apart pass water across their edge; <= 0: off
+  float gridDamping;   // kappa * dt: v gains this times the sum of its differences to its 4 neighbours
+  float spillHeight;   // clamp boundary: a cell along a wall higher than this spills down to it
+  float slopeShare;    // the share of an edge's difference over maxDifference that crosses it in a step
+  uint pad;
 };
 
 // Push constants of water_drop.comp: adds amplitude * (1 + cos(pi r / radius)) / 2

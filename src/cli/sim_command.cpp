@@ -35,7 +35,10 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   cmd->add_option("--boundary", o.boundary, "clamp (reflective walls) or wrap (periodic)")
       ->capture_default_str()
       ->check(CLI::IsMember({"clamp", "wrap"}));
-  cmd->add_option("--max-slope", o.maxSlope, "Limit |u - 4-neighbour average| to S*h after each step (0: off)")
+  cmd->add_option(
+         "--max-slope", o.maxSlope,
+         "Slope limiter: neighbours more than S*h apart pass an eighth of the excess across their edge each step, "
+         "keeping the volume; needs lambda <= 1/2 (0: off)")
       ->capture_default_str();
   cmd->add_option("--scheme", o.scheme, "symplectic (stable up to the bound) or explicit (forward Euler, unstable)")
       ->capture_default_str()

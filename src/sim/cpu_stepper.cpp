@@ -31,7 +31,12 @@ void CpuStepper::steps(uint64_t count, double dt) {
   const float fdt = float(dt);
   const bool wrap = p_.boundary == Boundary::Wrap;
   const bool symplectic = p_.scheme == Scheme::Symplectic;
-  const float maxOffset = float(p_.maxSlope * p_.h());
+  const float maxDifference = float(p_.maxSlope * p_.h());
+  const float share = float(slopeShare(p_));
+  // The slope limiter's excess of a difference (shaders_glsl/lib/water_update.glsl).
+  auto excess = [maxDifference](float difference) {
+    return difference - std::clamp(difference, -maxDifference, maxDifference);
+  };
   const float gridDamping = float(p_.gridDamping * dt);
   const float spillHeight = float(p_.spillHeight);
   for (uint64_t s = 0; s < count; ++s) {
@@ -55,9 +60,10 @@ void CpuStepper::steps(uint64_t count, double dt) {
           const float velocityLap = ((row[iW].v - v) + (row[iE].v - v)) + ((rowS[i].v - v) + (rowN[i].v - v));
           float vNew = decay * (v + waveFactor * lap) + gridDamping * velocityLap;
           float uNew = u + fdt * (symplectic ? vNew : v);
-          if (maxOffset > 0.0f) {
-            const float offset = (uNew - u) - 0.25f * lap;
-            if (std::abs(offset) > maxOffset) uNew = u + (0.25f * lap + std::copysign(maxOffset, offset));
+          if (maxDifference > 0.0f) {
+            const float moved =
+                (excess(u - row[iW].u) + excess(u - row[iE].u)) + (excess(u - rowS[i].u) + excess(u - rowN[i].u));
+            uNew = uNew - share * moved;
           }
           if ((wallRow || (!wrap && (i == 0 || i == n - 1))) && uNew > spillHeight) {  // over the rim: spills
             uNew = spillHeight;

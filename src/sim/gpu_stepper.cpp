@@ -26,11 +26,11 @@ shader::WaterStepParams stepParams(const WaterParams& p, double dt, uint32_t ste
       .dt = float(dt),
       .waveFactor = float(dt * p.waveSpeed * p.waveSpeed / (h * h)),
       .damping = float(std::exp(-p.damping * dt)),
-      .maxOffset = float(p.maxSlope * h),
+      .maxDifference = float(p.maxSlope * h),
       .gridDamping = float(p.gridDamping * dt),
       .spillHeight = float(p.spillHeight),
-      .pad1 = 0,
-      .pad2 = 0,
+      .slopeShare = float(slopeShare(p)),
+      .pad = 0,
   };
 }
 

@@ -24,7 +24,11 @@ void ReferenceSim::step(double dt) {
   const double h = p_.h();
   const double decay = std::exp(-p_.damping * dt);
   const double c2 = p_.waveSpeed * p_.waveSpeed;
-  const double maxOffset = p_.maxSlope * h;
+  const double maxDifference = p_.maxSlope * h, share = slopeShare(p_);
+  // The slope limiter: what an edge steeper than maxSlope passes down in a step.
+  const auto excess = [&](double difference) {
+    return share * (difference - std::clamp(difference, -maxDifference, maxDifference));
+  };
   for (long j = 0; j < n; ++j) {
     for (long i = 0; i < n; ++i) {
       const size_t k = size_t(j) * n + size_t(i);
@@ -34,7 +38,11 @@ void ReferenceSim::step(double dt) {
           velocityAt(i - 1, j) + velocityAt(i + 1, j) + velocityAt(i, j - 1) + velocityAt(i, j + 1) - 4.0 * v_[k];
       const double v = decay * (v_[k] + dt * c2 * laplacian) + p_.gridDamping * dt * velocityLaplacianH2;
       double u = u_[k] + dt * (p_.scheme == Scheme::Explicit ? v_[k] : v);
-      if (maxOffset > 0.0) u = average + std::clamp(u - average, -maxOffset, maxOffset);
+      if (maxDifference > 0.0) {
+        const double own = u_[k];
+        u -= excess(own - heightAt(i - 1, j)) + excess(own - heightAt(i + 1, j)) + excess(own - heightAt(i, j - 1)) +
+             excess(own - heightAt(i, j + 1));
+      }
       const bool atWall = i == 0 || j == 0 || i == n - 1 || j == n - 1;
       double vKept = v;
       if (atWall && p_.boundary == Boundary::Clamp && u > p_.spillHeight) {  // over the rim: spills

@@ -20,6 +20,7 @@ WaterParams waterParams(const WakeCase& c) {
           .waveSpeed = c.waveSpeed,
           .damping = c.damping,
           .boundary = c.boundary,
+          .maxSlope = c.maxSlope,
           .gridDamping = c.gridDamping,
           .sphereForcing = c.forcing,
           .spreadDepthFactor = c.spreadDepthFactor};

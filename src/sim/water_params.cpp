@@ -34,17 +34,23 @@ void validate(const WaterParams& p) {
   require(p.spillHeight > 0.0, "spill height (the rim over the rest level) must be > 0, got " + fmt(p.spillHeight));
 }
 
+double slopeShare(const WaterParams& p) { return p.maxSlope > 0.0 ? kSlopeShare : 0.0; }
+
+double lambdaBound(const WaterParams& p) { return kStabilityBound * std::sqrt(1.0 - 4.0 * slopeShare(p)); }
+
 double gridDampingBound(const WaterParams& p, double dt) {
-  const double d = std::exp(-p.damping * dt), lambda = p.lambda(dt);
-  return (2.0 + 2.0 * d - 8.0 * d * lambda * lambda) / 16.0;
+  const double d = std::exp(-p.damping * dt), lambda = p.lambda(dt), s = slopeShare(p);
+  return ((2.0 + 2.0 * d) * (1.0 - 4.0 * s) - 8.0 * d * lambda * lambda) / (16.0 - 64.0 * s);
 }
 
 void checkStable(const WaterParams& p, double dt) {
   require(std::isfinite(dt) && dt > 0.0, "time step must be positive and finite, got " + fmt(dt));
   const double lambda = p.lambda(dt);
-  require(lambda <= kStabilityBound,
-          "lambda = c*dt/h = " + fmt(lambda) + " exceeds the 2D stability bound 1/sqrt(2) = " + fmt(kStabilityBound) +
-              " (dt = " + fmt(dt) + " s, h = " + fmt(p.h()) + " m, c = " + fmt(p.waveSpeed) + " m/s)");
+  const std::string bound =
+      p.maxSlope > 0.0 ? "the bound with the slope limiter on, " : "the 2D stability bound 1/sqrt(2) = ";
+  require(lambda <= lambdaBound(p), "lambda = c*dt/h = " + fmt(lambda) + " exceeds " + bound + fmt(lambdaBound(p)) +
+                                        " (dt = " + fmt(dt) + " s, h = " + fmt(p.h()) + " m, c = " + fmt(p.waveSpeed) +
+                                        " m/s)");
   require(p.gridDamping * dt <= gridDampingBound(p, dt),
           "grid damping * dt = " + fmt(p.gridDamping * dt) + " exceeds its stability bound " +
               fmt(gridDampingBound(p, dt)) + " at dt = " + fmt(dt) + " s (lambda = " + fmt(lambda) + ")");
@@ -53,7 +59,7 @@ void checkStable(const WaterParams& p, double dt) {
 uint32_t substepsFor(const WaterParams& p, double frameTime, double safety) {
   require(std::isfinite(frameTime) && frameTime > 0.0, "frame time must be positive and finite, got " + fmt(frameTime));
   require(safety > 0.0 && safety <= 1.0, "substep safety factor must be in (0, 1]");
-  double needed = std::max(1.0, std::ceil(p.lambda(frameTime) / (safety * kStabilityBound)));
+  double needed = std::max(1.0, std::ceil(p.lambda(frameTime) / (safety * lambdaBound(p))));
   require(needed <= 1e6,
           "frame time " + fmt(frameTime) + " s needs " + fmt(needed) + " substeps, over the limit of 1e6");
   // The grid damping's bound grows as dt shrinks (towards 1/4 at dt -> 0):

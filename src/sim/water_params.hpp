@@ -22,13 +22,22 @@ inline constexpr double kSpreadDepthFactor = 0.766 / 1.177;
 // is stable only for lambda <= 1/sqrt(2) (DESIGN.md, "Numerics of the water").
 inline constexpr double kStabilityBound = 0.70710678118654752440;
 
+// The slope limiter's share: across an edge steeper than maxSlope, this share
+// of the height difference over maxSlope * h flows down in a step. An eighth
+// brings a checkerboard (every edge steep, each cell's four and each
+// neighbour's four) to the limit in one step without passing it.
+inline constexpr double kSlopeShare = 0.125;
+
 struct WaterParams {
   uint32_t n = 256;        // cells per side
   double extent = 2.0;     // L, metres per side; h = L / n
   double waveSpeed = 0.5;  // c, m/s
   double damping = 0.0;    // gamma, 1/s (a rate, so it does not change with dt)
   Boundary boundary = Boundary::Clamp;
-  double maxSlope = 0.0;  // > 0: |u - 4-neighbour average| <= maxSlope * h after each step
+  // > 0: the slope limiter. Neighbours whose heights differ by more than
+  // maxSlope * h pass kSlopeShare of the excess across their edge each step,
+  // which keeps the volume (docs/water-numerics.md).
+  double maxSlope = 0.0;
   Scheme scheme = Scheme::Symplectic;
   // kappa, 1/s: v gains kappa h^2 times its discrete Laplacian each second,
   // which damps the shortest waves (the checkerboard's amplitude at 4 kappa) and leaves
@@ -50,18 +59,28 @@ struct WaterParams {
 // Throws with the name and bound of the first impossible parameter.
 void validate(const WaterParams& p);
 
+// The share of an edge's excess the slope limiter moves in a step: 0 when
+// it is off.
+double slopeShare(const WaterParams& p);
+
+// The bound on lambda = c dt / h: 1/sqrt(2), and with the slope limiter on
+// (share s) sqrt(1 - 4 s) times that, 1/2 (docs/water-numerics.md).
+double lambdaBound(const WaterParams& p);
+
 // The largest kappa * dt with which a step of dt is stable: the symplectic
 // step's amplification matrix has its eigenvalues in the unit disc for every
-// mode when 8 d lambda^2 + 16 kappa dt <= 2 + 2 d, d = exp(-gamma dt)
+// mode when 8 d lambda^2 + 16 kappa dt <= 2 + 2 d, d = exp(-gamma dt); with
+// the slope limiter, whose steep edges act on the heights as a diffusion of
+// share s, when 8 d lambda^2 + (16 - 64 s) kappa dt <= (2 + 2 d)(1 - 4 s)
 // (docs/water-numerics.md).
 double gridDampingBound(const WaterParams& p, double dt);
 
-// Throws when lambda(dt) exceeds the stability bound, or kappa * dt exceeds
+// Throws when lambda(dt) exceeds lambdaBound, or kappa * dt exceeds
 // gridDampingBound, naming the value and the bound.
 void checkStable(const WaterParams& p, double dt);
 
 // The fewest equal substeps of a frame of `frameTime` seconds that keep
-// lambda <= safety / sqrt(2) and kappa dt <= safety * gridDampingBound.
+// lambda <= safety * lambdaBound and kappa dt <= safety * gridDampingBound.
 uint32_t substepsFor(const WaterParams& p, double frameTime, double safety = 0.9);
 
 std::string toString(Boundary b);

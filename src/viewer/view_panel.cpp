@@ -130,7 +130,8 @@ void showWater(const scene::Water& water) {
     const uint32_t substeps = sim::waterSubsteps(water);
     const double dt = sim::waterStep(water);
     ImGui::Text("%u substeps per frame, dt %.3g ms", substeps, dt * 1e3);
-    ImGui::Text("lambda = c dt / h = %.4f (bound 1/sqrt 2 = %.4f)", params.lambda(dt), sim::kStabilityBound);
+    ImGui::Text("lambda = c dt / h = %.4f (bound %.4f%s)", params.lambda(dt), sim::lambdaBound(params),
+                params.maxSlope > 0.0 ? ", with the slope limiter" : ", 1/sqrt 2");
   } catch (const std::exception& e) {
     ImGui::TextColored(kErrorColor, "%s", e.what());
   }
