@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "gpu/submit.hpp"
 #include "gpu_test.hpp"
@@ -132,15 +133,20 @@ TEST(SimParams, LambdaOverTheBoundIsRefused) {
   EXPECT_THROW(sim::checkStable(p, std::nan("")), std::runtime_error);
 }
 
+// Without and with the slope limiter, whose bound on lambda is 1/2.
 TEST(SimParams, SubstepsAreTheFewestWithinTheMargin) {
   sim::WaterParams p{.n = 256, .extent = 2.0, .waveSpeed = 0.5};
-  for (double frame : {1.0 / 240, 1.0 / 60, 1.0 / 24, 0.5}) {
-    const uint32_t k = sim::substepsFor(p, frame, 0.9);
-    EXPECT_LE(p.lambda(frame / k), 0.9 * sim::kStabilityBound) << frame;
-    if (k > 1) {
-      EXPECT_GT(p.lambda(frame / (k - 1)), 0.9 * sim::kStabilityBound) << frame;
+  for (const auto& [maxSlope, bound] : {std::pair{0.0, sim::kStabilityBound}, std::pair{0.5, 0.5}}) {
+    p.maxSlope = maxSlope;
+    for (double frame : {1.0 / 240, 1.0 / 60, 1.0 / 24, 0.5}) {
+      const uint32_t k = sim::substepsFor(p, frame, 0.9);
+      EXPECT_LE(p.lambda(frame / k), 0.9 * bound) << frame;
+      if (k > 1) {
+        EXPECT_GT(p.lambda(frame / (k - 1)), 0.9 * bound) << frame;
+      }
     }
   }
+  p.maxSlope = 0.0;
   EXPECT_THROW(sim::substepsFor(p, -1.0), std::runtime_error);
 }
 
