@@ -268,8 +268,8 @@ TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header,
-            "grid,speed_fraction,immersion,forcing,spread_depth_factor,grid_damping,steps,ms_per_step,high_share,"
-            "max_slope,crest_m,trough_m,volume_change_m3,device")
+            "grid,speed_fraction,immersion,forcing,spread_depth_factor,grid_damping,slope_limit,steps,ms_per_step,"
+            "high_share,max_slope,crest_m,trough_m,volume_change_m3,device")
       << table.header;
   EXPECT_EQ(table.rows, 2 * 2 * 2);
   EXPECT_NE(r.out.find("submerged"), std::string::npos) << r.out;
@@ -289,9 +289,22 @@ TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
     EXPECT_EQ(rows[k + 1].at("spread_depth_factor"), "4");
     EXPECT_LT(std::stod(rows[k + 1].at("crest_m")), std::stod(rows[k].at("crest_m"))) << rows[k].at("immersion");
   }
+  // The slope limiter: once per limit, the steepest slope lower with it and the volume kept.
+  r = runTidepool("bench wake --sizes 32 --speeds 0.9 --grid-dampings 2 --forcings spread --max-slopes 0,0.5 --csv " +
+                      csv + " --plot ''",
+                  dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<std::map<std::string, std::string>> limited = csvRows(csv);
+  ASSERT_EQ(limited.size(), 2u * 2u);
+  for (size_t k = 0; k < limited.size(); k += 2) {
+    EXPECT_EQ(limited[k].at("slope_limit"), "0");
+    EXPECT_EQ(limited[k + 1].at("slope_limit"), "0.5");
+    EXPECT_LT(std::stod(limited[k + 1].at("max_slope")), std::stod(limited[k].at("max_slope")));
+    EXPECT_LT(std::abs(std::stod(limited[k + 1].at("volume_change_m3"))), 1e-6);
+  }
   ScratchDir bad;
   for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x", "--forcings chord",
-                             "--spread-depth-factors -1", "--wave-speed 0", "--wave-speed x"}) {
+                             "--spread-depth-factors -1", "--max-slopes -1", "--wave-speed 0", "--wave-speed x"}) {
     expectCleanFailure(std::string("bench wake ") + option + " --csv " + bad.file("x.csv"), bad, {});
   }
   expectCleanFailure("bench wake --csv " + bad.file("x.txt"), bad, {});

@@ -15,19 +15,24 @@ def main(csv_path, png_path):
     measures = [("high_share", "variance share above half Nyquist"), ("max_slope", "steepest slope"),
                 ("crest_m", "highest crest (m)")]
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
-    # One colour per forcing, widening and grid damping (older CSVs have no
-    # forcing column: the column forcing; none has a widening for it).
+    # One colour per forcing, widening, grid damping and slope limit (older
+    # CSVs have no forcing column: the column forcing; none has a widening for
+    # it; older ones have no slope limit: the limiter off).
     def series_of(r):
-        return (r.get("forcing", "column"), r.get("spread_depth_factor", ""), float(r["grid_damping"]))
+        return (r.get("forcing", "column"), r.get("spread_depth_factor", ""), float(r["grid_damping"]),
+                float(r.get("slope_limit") or 0))
 
     series = sorted({series_of(r) for r in rows})
     markers = {"half": "o", "submerged": "s"}
     colours = plt.get_cmap("viridis")
     for ax, (key, label) in zip(axes, measures):
-        for k, (forcing, widening, kappa) in enumerate(series):
+        for k, (forcing, widening, kappa, limit) in enumerate(series):
             name = f"{forcing}, widening {widening}" if widening else forcing
+            if limit:
+                name += f", slope limit {limit:g}"
             for immersion, marker in markers.items():
-                picked = [r for r in rows if series_of(r) == (forcing, widening, kappa) and r["immersion"] == immersion]
+                picked = [r for r in rows
+                          if series_of(r) == (forcing, widening, kappa, limit) and r["immersion"] == immersion]
                 if not picked:
                     continue
                 ax.scatter([float(r["ms_per_step"]) for r in picked], [float(r[key]) for r in picked],
@@ -36,7 +41,10 @@ def main(csv_path, png_path):
                 for r in picked:
                     ax.annotate(f'{r["grid"]} {float(r["speed_fraction"]):g}c',
                                 (float(r["ms_per_step"]), float(r[key])), fontsize=6)
-        ax.set_xscale("log")
+        # A log axis over less than a decade labels its minor ticks on top of each other.
+        ms = [float(r["ms_per_step"]) for r in rows]
+        if ms and max(ms) > 10 * min(ms):
+            ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("wall ms per step (forcing and step)")
         ax.set_ylabel(label)

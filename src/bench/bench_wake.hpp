@@ -14,6 +14,7 @@ struct BenchWakeOptions {
   std::vector<std::string> forcings{"column", "spread"};  // the forcing methods compared
   // The spread forcing's widening per metre of depth; the column forcing has none.
   std::vector<double> spreadDepthFactors{sim::kSpreadDepthFactor};
+  std::vector<double> maxSlopes{0.0};            // the slope limiter (water.max_slope); 0: off
   double waveSpeed = sim::WakeCase{}.waveSpeed;  // c, m/s: the default scene's
   std::string csv = "bench_wake.csv";
   std::string plot = "bench_wake.png";
@@ -26,8 +27,8 @@ struct BenchWakeOptions {
 // grid size, speed, grid damping and forcing: the share of the height variance above
 // half the Nyquist wavenumber, the steepest slope, the highest crest and
 // deepest trough against the wall milliseconds per step (forcing and step).
-// The spread forcing runs once per widening in spreadDepthFactors.
-// A table, CSV and a plot.
+// The spread forcing runs once per widening in spreadDepthFactors; every run
+// once per slope limit in maxSlopes. A table, CSV and a plot.
 int runBenchWake(const BenchWakeOptions& options);
 
 }  // namespace tp::app
