@@ -30,10 +30,11 @@ double modeError(const sim::WaterState& s, const sim::WaterState& initial, doubl
 using SimAccuracy = GpuTest;
 
 // 1000 steps from white noise (every mode excited) around level 0, lambda = 0.5
-// (0.3 with the slope limiter, within its bounds), some damping, with and without grid damping. Round-off in float32
-// grows at most linearly with the step count: the bound is steps * 4 * eps times the field's scale (max |u0| for u, (c
-// / h) max |u0| for v, the velocity a height of that size drives), far below the O(1) relative error of a wrong
-// stencil, boundary or clamp.
+// (0.3 with the slope limiter, within its bounds), some damping, with and
+// without grid damping. Round-off in float32 grows at most linearly with the
+// step count: the bound is steps * 4 * eps times the field's scale (max |u0|
+// for u, (c / h) max |u0| for v, the velocity a height of that size drives),
+// far below the O(1) relative error of a wrong stencil, boundary or limiter.
 TEST_F(SimAccuracy, GpuMatchesCpuReferenceAfter1000Steps) {
   constexpr uint32_t kSteps = 1000;
   for (auto boundary : {sim::Boundary::Clamp, sim::Boundary::Wrap}) {

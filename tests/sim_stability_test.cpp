@@ -10,6 +10,7 @@
 #include "gpu_test.hpp"
 #include "sim/gpu_stepper.hpp"
 #include "sim/reference_sim.hpp"
+#include "sim/wake_measures.hpp"
 #include "sim_support.hpp"
 
 namespace tp::test {
@@ -239,15 +240,7 @@ TEST(SimParams, SlopeLimiterKeepsTheVolume) {
     const double before = limited.stats(dt).volume;
     free.steps(1000, dt);
     limited.steps(1000, dt);
-    auto steepest = [&](const sim::ReferenceSim& s) {
-      double worst = 0.0;
-      for (uint32_t j = 0; j < p.n; ++j) {
-        for (uint32_t i = 0; i + 1 < p.n; ++i) {
-          worst = std::max(worst, std::abs(s.u()[size_t(j) * p.n + i + 1] - s.u()[size_t(j) * p.n + i]) / p.h());
-        }
-      }
-      return worst;
-    };
+    auto steepest = [&](const sim::ReferenceSim& s) { return sim::measureWake(s.state(), p.extent, 0.0, {}).maxSlope; };
     SCOPED_TRACE(sim::toString(boundary));
     EXPECT_LT(std::abs(limited.stats(dt).volume - before), 1e-15);
     EXPECT_LT(steepest(limited), 0.5 * steepest(free));

@@ -25,6 +25,9 @@ def main(csv_path, png_path):
     series = sorted({series_of(r) for r in rows})
     markers = {"half": "o", "submerged": "s"}
     colours = plt.get_cmap("viridis")
+    # A log axis over less than a decade labels its minor ticks on top of each other.
+    ms = [float(r["ms_per_step"]) for r in rows]
+    time_axis = "log" if ms and max(ms) > 10 * min(ms) else "linear"
     for ax, (key, label) in zip(axes, measures):
         for k, (forcing, widening, kappa, limit) in enumerate(series):
             name = f"{forcing}, widening {widening}" if widening else forcing
@@ -41,10 +44,7 @@ def main(csv_path, png_path):
                 for r in picked:
                     ax.annotate(f'{r["grid"]} {float(r["speed_fraction"]):g}c',
                                 (float(r["ms_per_step"]), float(r[key])), fontsize=6)
-        # A log axis over less than a decade labels its minor ticks on top of each other.
-        ms = [float(r["ms_per_step"]) for r in rows]
-        if ms and max(ms) > 10 * min(ms):
-            ax.set_xscale("log")
+        ax.set_xscale(time_axis)
         ax.set_yscale("log")
         ax.set_xlabel("wall ms per step (forcing and step)")
         ax.set_ylabel(label)

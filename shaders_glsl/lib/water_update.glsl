@@ -5,12 +5,6 @@
 #define TP_LIB_WATER_UPDATE
 #include "shared/water.h"
 
-// How far a height difference lies beyond +-limit (0 within it); odd in the
-// difference, so the two cells of an edge see the same excess, negated.
-float waterSlopeExcess(float difference, float limit) {
-  return difference - clamp(difference, -limit, limit);
-}
-
 // New (u, v) of a cell from its height u, velocity v and the heights and
 // velocities of its west, east, south and north neighbours (ghost cells
 // already resolved); `atWall`: the cell lies along the grid's edge.

@@ -41,6 +41,14 @@ struct WaterStepParams {
   uint pad;
 };
 
+// The slope limiter's excess of a height difference: how far it lies beyond
+// +-limit (0 within it). Odd in the difference, so the two cells of an edge
+// see the same excess, negated. lib/water_update.glsl and the C++ stepper
+// (sim/cpu_stepper.cpp) share it.
+TP_INLINE float waterSlopeExcess(float difference, float limit) {
+  return difference - clamp(difference, -limit, limit);
+}
+
 // Push constants of water_drop.comp: adds amplitude * (1 + cos(pi r / radius)) / 2
 // to u within radius of the centre.
 struct WaterDropParams {

@@ -33,10 +33,7 @@ void CpuStepper::steps(uint64_t count, double dt) {
   const bool symplectic = p_.scheme == Scheme::Symplectic;
   const float maxDifference = float(p_.maxSlope * p_.h());
   const float share = float(slopeShare(p_));
-  // The slope limiter's excess of a difference (shaders_glsl/lib/water_update.glsl).
-  auto excess = [maxDifference](float difference) {
-    return difference - std::clamp(difference, -maxDifference, maxDifference);
-  };
+  auto excess = [maxDifference](float difference) { return shader::waterSlopeExcess(difference, maxDifference); };
   const float gridDamping = float(p_.gridDamping * dt);
   const float spillHeight = float(p_.spillHeight);
   for (uint64_t s = 0; s < count; ++s) {
