@@ -3,6 +3,7 @@
 // The tiled pool floor, Lambertian (shared/shading.h), the sun through the
 // waves from the caustics texture, through the water when the camera is under it.
 #include "shared/shading.h"
+#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
@@ -19,7 +20,7 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec2 footprint = fwidth(worldPosition.xz) * frame.sampling.x;
   const float caustic =
-      texture(caustics, causticsUv(pool, frame.sunDirection.xyz, worldPosition)).r * frameSunShare(worldPosition);
+      causticsRatio(caustics, pool, frame.sunDirection.xyz, worldPosition) * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 albedo = groundAlbedo(pool.tiles, worldPosition.xz, footprint);
   color = vec4(lambertRadiance(frame, albedo, n, caustic) * toCamera +

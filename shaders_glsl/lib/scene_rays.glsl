@@ -14,6 +14,7 @@
 #include "shared/glass.h"
 #include "shared/objects.h"
 #include "shared/shading.h"
+#include "lib/caustics_lookup.glsl"
 #include "lib/glossy_lookup.glsl"
 
 layout(binding = 0) uniform Frame { FrameUniforms frame; };
@@ -29,8 +30,9 @@ layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  //
 #include "shared/pool_trace.h"
 #include "shared/object_cast.h"
 
-// Both textures have one level: level 0 is what an implicit lookup reads, and
-// compute shaders (water_surface_deferred.comp) have no implicit lookups.
+// The sky texture has one level: level 0 is what an implicit lookup reads,
+// and compute shaders (water_surface_deferred.comp) have no implicit lookups.
+// (The caustics are gathered, which reads level 0.)
 vec3 sky(vec3 direction) { return textureLod(skyTexture, directionToEquirect(direction), 0.0).rgb; }
 
 // What the water scatters into the ray from `start` along `dir` (unit, under
@@ -50,7 +52,7 @@ bool inPoolWater(vec3 p) { return pool.box.x > 0.0 && max(abs(p.x), abs(p.z)) < 
 
 // The sun through the waves at `met` under the water, relative to flat
 // water: the caustics texture at its light line.
-float causticsAt(vec3 met) { return textureLod(caustics, causticsUv(pool, frame.sunDirection.xyz, met), 0.0).r; }
+float causticsAt(vec3 met) { return causticsRatio(caustics, pool, frame.sunDirection.xyz, met); }
 
 // The sun at `met` under the water: its share in view, through the waves.
 float sunUnderWater(vec3 met) { return frameSunShare(met) * causticsAt(met); }

@@ -2,7 +2,8 @@
 // The reference's caustics: the sun's irradiance under the water through the
 // simulated surface, relative to flat water, by light tracing. Photons
 // leave the sun on a regular lattice, meet the water's triangle mesh (the
-// reference's own, with its interpolated vertex normals), are refracted by
+// surface reaching the walls, shading/water_model's waterSurfaceToTheWalls,
+// with its interpolated vertex normals), are refracted by
 // Snell's law and go on to what they meet first under the water: the
 // floor's mesh, a wall, a box or a sphere. They are counted there per texel
 // of a grid over the pool, indexed as the raster's caustics texture is, by
@@ -47,8 +48,8 @@ struct CausticReceivers {
   std::vector<scene::Sphere> spheres;
 };
 
-// The caustics of the scene's pool under `water` (its mesh of sceneMeshes
-// and one normal per vertex), on a grid of `size` texels a side over the
+// The caustics of the scene's pool under `water` (its mesh reaching the
+// walls and one normal per vertex: waterSurfaceToTheWalls), on a grid of `size` texels a side over the
 // light lines, each sent photonsPerTexelSide^2 photons.
 CausticsMap traceCaustics(const scene::Scene& scene, const scene::Mesh& water,
                           const std::vector<glm::vec3>& waterNormals, const CausticReceivers& receivers, uint32_t size,

@@ -142,7 +142,10 @@ class Tracer {
             materials_[m] == Material::Box)
           receivers.meshes.push_back(traced[m]);
       }
-      caustics_ = traceCaustics(scene, traced.at(size_t(waterMesh_)), waterNormals_, receivers, kReferenceCausticsSize);
+      const WaterToTheWalls toTheWalls = waterSurfaceToTheWalls(scene, *water);
+      caustics_ = traceCaustics(scene, toTheWalls.mesh, toTheWalls.normals, receivers, kReferenceCausticsSize);
+      surfaceToTheWalls_ =
+          std::make_unique<ReferenceScene>(std::vector<scene::Mesh>{toTheWalls.mesh}, std::vector<scene::Sphere>{});
     }
     bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
     tracedMeshes_ = std::move(traced);
@@ -284,11 +287,22 @@ class Tracer {
   }
 
   // The sun's irradiance at p through the waves relative to flat water: the
-  // light-traced caustics on p's light line, under the water in the pool; 1
+  // light-traced caustics on p's light line, under the water's surface; 1
   // elsewhere or without caustics.
   float focus(glm::vec3 p) const {
-    if (!caustics_ || !shader::causticsReach(pool_, p)) return 1.0f;
+    if (!caustics_ || !underTheSurface(p)) return 1.0f;
     return caustics_->at(shader::causticsLine(pool_, glm::vec3(uniforms_.sunDirection), p));
+  }
+
+  // Whether p lies in the pool under the water's surface: the line up from
+  // it meets the surface reaching the walls, cast a little in from them so as
+  // not to run along the mesh's edge. Above the water drawn down by a wave, in
+  // the air, whatever the rest level.
+  bool underTheSurface(glm::vec3 p) const {
+    if (!surfaceToTheWalls_ || std::max(std::abs(p.x), std::abs(p.z)) > poolHalf_) return false;
+    const float inside = poolHalf_ - kSurfaceOffset;
+    const glm::vec3 from(std::clamp(p.x, -inside, inside), p.y, std::clamp(p.z, -inside, inside));
+    return surfaceToTheWalls_->intersect(from, glm::vec3(0.0f, 1.0f, 0.0f), 0.0f).hit();
   }
 
   glm::vec3 sky(glm::vec3 dir) const {
@@ -382,9 +396,10 @@ class Tracer {
   std::vector<glm::vec3> albedo_;  // per traced mesh: the boxes'; unused for the others
   int waterMesh_ = -1;
   std::vector<glm::vec3> waterNormals_;
-  std::optional<CausticsMap> caustics_;  // render.caustics: the floor's sun through the waves
-  std::vector<scene::Sphere> spheres_;   // the Lambertian ones, where they are at the frame's time
-  std::vector<scene::Sphere> glass_;     // the glass ones
+  std::optional<CausticsMap> caustics_;                // render.caustics: the floor's sun through the waves
+  std::unique_ptr<ReferenceScene> surfaceToTheWalls_;  // with caustics: the water reaching the walls
+  std::vector<scene::Sphere> spheres_;                 // the Lambertian ones, where they are at the frame's time
+  std::vector<scene::Sphere> glass_;                   // the glass ones
   std::unique_ptr<ReferenceScene> bvh_;
 };
 

@@ -40,6 +40,7 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
         gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
                            vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled, "caustics");
     draw_.caustics = graph.image("caustics", caustics_);
+    causticsMesh_.emplace(ctx, scene.water.grid + 2, true, "caustics grid");
     causticsPipeline_ = gpu::createGraphicsPipeline(ctx, {.vertexShader = "caustics.vert",
                                                           .fragmentShader = "caustics.frag",
                                                           .pushSize = sizeof(shader::WaterSurfaceParams),
@@ -69,7 +70,7 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
                  renderTo(pc.cmd, std::span(&colorTarget, 1), nullptr, target.extent, [&] {
                    gpu::bindPipeline(pc.cmd, *causticsPipeline_, water.params);
                    set.bind(pc.cmd, *causticsPipeline_, pc.descriptors);
-                   drawWater(pc.cmd, water);
+                   causticsMesh_->draw(pc.cmd);
                  });
                };
              },

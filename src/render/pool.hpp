@@ -13,9 +13,9 @@
 
 namespace tp::render {
 
-// The caustics hold one value a texel: a format every device must blend and
-// sample linearly.
-constexpr vk::Format kCausticsFormat = vk::Format::eR16Sfloat;
+// The caustics hold two values a texel, the ratio and the layers that reach
+// it (caustics.frag): a format every device must blend and sample linearly.
+constexpr vk::Format kCausticsFormat = vk::Format::eR16G16Sfloat;
 constexpr uint32_t kWallVertices = 24;  // pool_walls.vert: four quads
 constexpr uint32_t kCoverVertices = 6;  // pool_cover.vert: one quad
 
@@ -64,10 +64,14 @@ class Pool {
   // (shading/grid_detail.hpp); returns whether it changed.
   bool setFloorStep(uint32_t step) { return floorMesh_.setStep(step); }
   uint32_t floorStep() const { return floorMesh_.step(); }
+  // The step the caustics draw the water's grid at, the surface's; returns
+  // whether it changed.
+  bool setCausticsStep(uint32_t step) { return causticsMesh_ && causticsMesh_->setStep(step); }
 
  private:
   gpu::Buffer uniforms_, floorVertices_;
   GridMesh floorMesh_;
+  std::optional<GridMesh> causticsMesh_;  // the water's grid reaching the walls
   gpu::Image caustics_;
   PoolDraw draw_;
   gpu::Pipeline walls_, floor_, floorDepth_, cover_;

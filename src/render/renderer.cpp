@@ -262,14 +262,15 @@ struct Renderer::Resources {
   }
 
   // The water's and the floor's grids as finely as this frame shows them
-  // (the camera may have moved). The cached caustics draw the water's grid:
-  // a new step draws them again.
+  // (the camera may have moved). The cached caustics draw the water's grid
+  // reaching the walls at the same step: a new step draws them again.
   void setGridSteps(const scene::Scene& scene, const glm::mat4& viewProjection, glm::vec2 pixels) {
     if (!waterSurface) return;
     auto step = [&](float y, uint32_t vertices) {
       return coarseGrids ? gridStep(viewProjection, pixels, {0.0f, y, 0.0f}, scene.water.extent, vertices) : 1u;
     };
-    if (waterSurface->setGridStep(step(scene.water.level, scene.water.grid))) {
+    const uint32_t waterStep = step(scene.water.level, scene.water.grid);
+    if (waterSurface->setGridStep(waterStep) | pool->setCausticsStep(waterStep)) {
       for (ResourceRef state : waterSurface->draw().state.refs) graph.touch(state);
     }
     pool->setFloorStep(step(scene.ground.height - scene.pool.depth, kPoolFloorGrid));

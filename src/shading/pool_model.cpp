@@ -15,7 +15,7 @@ glm::vec2 poolFloorVertexXz(const shader::PoolParams& pool, uint32_t i, uint32_t
 
 float causticsReach(const scene::Scene& scene, uint32_t texels) {
   const float half = 0.5f * scene.water.extent;
-  return half - 0.5f * scene.water.extent / float(scene.water.grid) - half / float(texels);
+  return half - half / float(texels);
 }
 
 namespace {

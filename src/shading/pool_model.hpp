@@ -38,11 +38,10 @@ PoolModel poolModel(const scene::Scene& scene);
 shader::PoolParams poolParams(const scene::Scene& scene);
 
 // How far from the pool's centre, in x and in z, a caustics map of `texels`
-// a side holds light lines read whole: the water's mesh spans the grid's
-// cell centres, half a cell short of the walls, so the lines past it carry
-// no light; and half a texel in, so a bilinear read does not reach them.
-// The lines beyond are read as the nearest within (the water reaches the
-// walls; its mesh does not).
+// a side holds light lines read whole: the water's light reaches the walls
+// (the caustics' mesh does: waterSurfaceToTheWalls), so to the outermost
+// texels' centres, where a bilinear read stops. The lines beyond are read
+// as the nearest within.
 float causticsReach(const scene::Scene& scene, uint32_t texels);
 
 // Where floor vertex (i, j) lies in xz.

@@ -105,27 +105,13 @@ scene::ShadedMesh boxShaded(const scene::Mesh& mesh, const scene::Box& box) {
 }  // namespace
 
 scene::ShadedMesh exportedWaterMesh(const scene::Scene& scene, const sim::WaterState& water) {
-  const uint32_t n = water.n, ring = n + 2;
   const float half = 0.5f * scene.water.extent;
-  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
-  const auto cells = sim::toCells(water, scene.water.extent);
-  const auto normals = waterVertexNormals(water, scene.water.extent);
+  WaterToTheWalls toTheWalls = waterSurfaceToTheWalls(scene, water);
   scene::ShadedMesh m;
-  m.mesh = {"water", {}, waterGridIndices(ring)};
-  // Ring index I to the cell it takes its height from, and its coordinate:
-  // the walls at the ends, the cell's centre (as sceneMeshes places it) between.
-  const auto cell = [&](uint32_t I) { return std::clamp<uint32_t>(I, 1, n) - 1; };
-  const auto along = [&](uint32_t I, float centre) { return I == 0 ? -half : I == ring - 1 ? half : centre; };
-  for (uint32_t J = 0; J < ring; ++J) {
-    for (uint32_t I = 0; I < ring; ++I) {
-      const size_t k = size_t(cell(J)) * n + cell(I);
-      const auto& c = cells[k];
-      const glm::vec3 at(along(I, p.placement.x + c.x), p.placement.y + c.u, along(J, p.placement.z + c.z));
-      m.mesh.positions.push_back(at);
-      m.normals.push_back(normals[k]);
-      m.uvs.push_back((glm::vec2(at.x, at.z) + half) / (2.0f * half));
-    }
-  }
+  m.mesh = std::move(toTheWalls.mesh);
+  m.mesh.name = "water";
+  m.normals = std::move(toTheWalls.normals);
+  for (const glm::vec3& at : m.mesh.positions) m.uvs.push_back((glm::vec2(at.x, at.z) + half) / (2.0f * half));
   // What a metre of water lets through: the colour it takes on in depth.
   m.material.albedo = glm::exp(-scene.water.absorption);
   m.material.specular = 1.0f;

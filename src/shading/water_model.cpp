@@ -153,6 +153,31 @@ std::vector<scene::Mesh> sceneMeshes(const scene::Scene& scene, const sim::Water
   return meshes;
 }
 
+WaterToTheWalls waterSurfaceToTheWalls(const scene::Scene& scene, const sim::WaterState& water) {
+  const uint32_t n = water.n, side = n + 2;
+  const shader::WaterSurfaceParams p = waterSurfaceParams(scene);
+  const float h = p.placement.w;
+  const auto cells = sim::toCells(water, scene.water.extent);
+  const std::vector<glm::vec3> cellNormals = waterVertexNormals(water, scene.water.extent);
+  WaterToTheWalls to{{"water to the walls", {}, waterGridIndices(side)}, {}};
+  to.mesh.positions.reserve(size_t(side) * side);
+  to.normals.reserve(size_t(side) * side);
+  for (uint32_t j = 0; j < side; ++j) {
+    for (uint32_t i = 0; i < side; ++i) {
+      const size_t cell = size_t(std::clamp(j, 1u, n) - 1) * n + (std::clamp(i, 1u, n) - 1);
+      // Vertex k of a row lies at (k - 1/2) h from the grid's corner, held within the walls.
+      const float x = std::clamp(float(i) - 0.5f, 0.0f, float(n)) * h;
+      const float z = std::clamp(float(j) - 0.5f, 0.0f, float(n)) * h;
+      to.mesh.positions.push_back({p.placement.x + x, p.placement.y + cells[cell].u, p.placement.z + z});
+      glm::vec3 normal = cellNormals[cell];
+      if (i == 0 || i == side - 1) normal.x = 0.0f;
+      if (j == 0 || j == side - 1) normal.z = 0.0f;
+      to.normals.push_back(glm::normalize(normal));
+    }
+  }
+  return to;
+}
+
 bool cameraOverWater(const scene::Scene& scene) {
   const glm::vec3 c = scene.camera.position;
   return shader::overWaterSquare(waterSurfaceParams(scene), glm::vec2(c.x, c.z));

@@ -30,6 +30,17 @@ shader::GroundParams groundParams(const scene::Scene& scene);
 // sided at the edges: the normals water_surface.vert computes.
 std::vector<glm::vec3> waterVertexNormals(const sim::WaterState& water, float extent);
 
+// The water surface reaching the walls, for the light through it (the
+// caustics: caustics.vert draws the same mesh): (n + 2)^2 vertices, the
+// inner n^2 the cells' centres, the outer ring on the walls with its edge
+// cell's height and its normal without the slope across the wall (the
+// walls reflect: lib/water_grid.glsl's wallGridPosition and wallGridNormal).
+struct WaterToTheWalls {
+  scene::Mesh mesh;
+  std::vector<glm::vec3> normals;
+};
+WaterToTheWalls waterSurfaceToTheWalls(const scene::Scene& scene, const sim::WaterState& water);
+
 // Whether the camera is over the water's square (and so may be under its
 // surface); elsewhere the medium around it is air whatever the water does.
 bool cameraOverWater(const scene::Scene& scene);
