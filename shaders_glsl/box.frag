@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // A Lambertian box (shared/shading.h), through the water when the camera is under it.
 #include "shared/shading.h"
+#include "shared/water.h"
 #include "shared/objects.h"
-#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 
 layout(location = 0) in vec3 worldPosition;
@@ -15,6 +15,8 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
+layout(binding = 5) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
+#include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(push_constant) uniform Push { BoxParams params; };
 
 void main() {

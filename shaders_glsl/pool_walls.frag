@@ -3,7 +3,7 @@
 // The pool's walls (plain or brick, shared/pool.h), Lambertian (shared/shading.h)
 // with their glossy lobe (shared/glossy.h), through the water when the camera is under it.
 #include "shared/shading.h"
-#include "lib/caustics_lookup.glsl"
+#include "shared/water.h"
 #include "lib/gbuffer.glsl"
 #include "lib/glossy_lookup.glsl"
 
@@ -15,6 +15,8 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 2) uniform sampler2D caustics;
+layout(binding = 6) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
+#include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 layout(binding = 4) uniform sampler2D glossyMap;
 

@@ -3,8 +3,8 @@
 // A Lambertian sphere (shared/shading.h) with its glossy lobe (shared/glossy.h),
 // through the water when the camera is under it.
 #include "shared/shading.h"
+#include "shared/water.h"
 #include "shared/objects.h"
-#include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
 #include "lib/glossy_lookup.glsl"
 
@@ -18,6 +18,8 @@ layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(binding = 2) uniform sampler2D glossyMap;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
+layout(binding = 5) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
+#include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(push_constant) uniform Push { SphereParams params; };
 
 void main() {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "cli/frame_samples.hpp"
 #include "gpu_test.hpp"
@@ -13,11 +15,9 @@
 #include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "shading/frame_uniforms.hpp"
-#include "shading/pool_model.hpp"
 #include "shading/sky_model.hpp"
 #include "shading/water_model.hpp"
 #include "shared/objects.h"
-#include "shared/shading.h"
 #include "sim/water_scene.hpp"
 #include "sim/water_state.hpp"
 
@@ -248,69 +248,104 @@ TEST_F(CausticsReferenceGpuTest, RasterCausticsMatchTheLightTracedOnes) {
   }
 }
 
-// Where the water stands below its rest level at a lit wall, the wall
-// between the two is in the air, in the whole sun. The caustics' mesh once
-// stopped half a cell short of the walls, and the lines there read as no
-// light: a dark line across the wall at the rest level. A drop drawn down
-// against the wall at x = -2, which the sun lights, seen from across the
-// pool: on the pixels whose first surface is that wall below the rest level
-// (the reference's position AOV), both renderers' ratio is 1. The raster's
-// is exact there but within its bilinear read of the water's light: two
-// texels of light lines from the waterline on the wall.
-TEST_F(CausticsReferenceGpuTest, WallAboveATroughHasTheWholeSun) {
+// What each renderer's caustics ratio does about a surface (`on`) in a
+// trough, frame 2 of `s` at 160x160. On the whole pixels (their four
+// neighbours too, so no sample sees the water) whose first surface, by the
+// reference's position AOV, lies on it below the water's rest level, in the
+// air: how far each strays from 1. On the pixels that see it through the
+// water within 0.1 m of it (`near`): the raster's RMS difference from the
+// reference.
+struct AboutTheTrough {
+  size_t inTheAir = 0, throughTheWater = 0;
+  double raster = 0.0, reference = 0.0, rmsThroughTheWater = 0.0;
+};
+
+AboutTheTrough ratiosAboutTheTrough(const gpu::Context& ctx, const scene::Scene& s,
+                                    const std::function<bool(glm::vec3)>& on,
+                                    const std::function<bool(glm::vec3)>& near) {
   constexpr uint32_t kWidth = 160, kHeight = 160, kFrame = 2;
+  const sim::WaterState water = sim::simulateWater(ctx, s, kFrame);
+  std::vector<float> position;
+  const auto reference = causticsRatios(ctx, s, water, kFrame, kWidth, kHeight, true, &position);
+  const auto raster = causticsRatios(ctx, s, water, kFrame, kWidth, kHeight, false);
+  auto at = [&](uint32_t x, uint32_t y) { return glm::make_vec3(&position[(size_t(y) * kWidth + x) * 4]); };
+  auto inTheAir = [&](uint32_t x, uint32_t y) { return at(x, y).y < s.water.level && on(at(x, y)); };
+  const float half = 0.5f * s.water.extent;
+  AboutTheTrough about;
+  double squares = 0.0;
+  for (uint32_t y = 1; y + 1 < kHeight; ++y) {
+    for (uint32_t x = 1; x + 1 < kWidth; ++x) {
+      const size_t p = size_t(y) * kWidth + x;
+      // The water's surface: in the pool, off the floor, and not on the surface.
+      const glm::vec3 q = at(x, y);
+      const bool water = std::abs(q.y - s.water.level) < 0.3f && std::max(std::abs(q.x), std::abs(q.z)) < half;
+      if (water && !on(q) && near(q) && raster[p] >= 0.0f && reference[p] >= 0.0f) {
+        ++about.throughTheWater;
+        squares += (raster[p] - reference[p]) * (raster[p] - reference[p]);
+      }
+      if (!inTheAir(x, y) || !inTheAir(x - 1, y) || !inTheAir(x + 1, y) || !inTheAir(x, y - 1) || !inTheAir(x, y + 1))
+        continue;
+      ++about.inTheAir;
+      about.raster = std::max(about.raster, std::abs(double(raster[p]) - 1.0));
+      about.reference = std::max(about.reference, std::abs(double(reference[p]) - 1.0));
+    }
+  }
+  about.rmsThroughTheWater = std::sqrt(squares / double(std::max<size_t>(about.throughTheWater, 1)));
+  std::printf(
+      "  in the air, %zu pixels: the raster's ratio within %.4f of 1, the reference's %.4f; through the water, %zu "
+      "pixels: the raster's RMS difference from the reference %.4f\n",
+      about.inTheAir, about.raster, about.reference, about.throughTheWater, about.rmsThroughTheWater);
+  return about;
+}
+
+// The pool lit from +x +z (the walls at x = -2 and z = -2), a drop drawn
+// down at `at` (0.2 m deep), seen from `camera`.
+scene::Scene troughAt(glm::vec2 at, float radius, glm::vec3 camera, glm::vec3 target, float fov) {
   scene::Scene s = sunlitPool();
   s.sky.sunElevationDegrees = 50.0f;
   s.sky.sunAzimuthDegrees = 45.0f;
-  s.water.drops = {{.x = -2.0f, .z = 0.0f, .radius = 0.6f, .amplitude = -0.2f}};
-  s.camera.position = {1.2f, 0.9f, 0.6f};
-  s.camera.target = {-2.0f, -0.3f, 0.0f};
-  s.camera.fovYDegrees = 50.0f;
-  const sim::WaterState water = sim::simulateWater(ctx(), s, kFrame);
-  std::vector<float> position;
-  const auto reference = causticsRatios(ctx(), s, water, kFrame, kWidth, kHeight, true, &position);
-  const auto raster = causticsRatios(ctx(), s, water, kFrame, kWidth, kHeight, false);
-  // The water's height on the wall at z: its edge cells' (the caustics'
-  // mesh reaching the walls), between their centres.
-  const float cell = s.water.extent / float(water.n), half = 0.5f * s.water.extent;
-  auto waterAtWall = [&](float z) {
-    const float g = std::clamp((z + half) / cell - 0.5f, 0.0f, float(water.n - 1));
-    const uint32_t j = std::min(uint32_t(g), water.n - 2);
-    return s.water.level + glm::mix(water.u[size_t(j) * water.n], water.u[size_t(j + 1) * water.n], g - float(j));
-  };
-  // Two texels of light lines, as a height on the wall: a light line moves
-  // across the wall by the refracted sun's run in x over its fall.
-  const glm::vec3 light = shader::causticsLight(render::poolParams(s), render::sunDirection(s.sky));
-  const float margin = 2.0f * (s.water.extent / float(render::kCausticsSize)) * std::abs(light.y / light.x);
-  auto onBand = [&](uint32_t x, uint32_t y) {
-    const float* at = &position[(size_t(y) * kWidth + x) * 4];
-    return std::abs(at[0] + half) < 1e-3f && at[1] < s.water.level;
-  };
-  size_t band = 0, clear = 0;
-  double worstClear = 0.0, worstNear = 0.0, worstReference = 0.0;
-  for (uint32_t y = 1; y + 1 < kHeight; ++y) {
-    for (uint32_t x = 1; x + 1 < kWidth; ++x) {
-      // Whole pixels: the band's four neighbours too, so no sample sees the water.
-      if (!onBand(x, y) || !onBand(x - 1, y) || !onBand(x + 1, y) || !onBand(x, y - 1) || !onBand(x, y + 1)) continue;
-      const size_t p = size_t(y) * kWidth + x;
-      const double error = std::abs(double(raster[p]) - 1.0);
-      ++band;
-      worstReference = std::max(worstReference, std::abs(double(reference[p]) - 1.0));
-      if (position[p * 4 + 1] > waterAtWall(position[p * 4 + 2]) + margin) {
-        ++clear;
-        worstClear = std::max(worstClear, error);
-      } else {
-        worstNear = std::max(worstNear, error);
-      }
-    }
-  }
-  std::printf(
-      "the wall above the trough, %zu pixels: the reference's ratio within %.4f of 1; the raster's within %.4f on "
-      "the %zu clear of the waterline by %.1f mm, %.4f on the others\n",
-      band, worstReference, worstClear, clear, 1e3 * margin, worstNear);
-  EXPECT_GT(clear, size_t(50));
-  EXPECT_LT(worstReference, 1e-3);
-  EXPECT_LT(worstClear, 1e-3);
+  s.water.drops = {{.x = at.x, .z = at.y, .radius = radius, .amplitude = -0.2f}};
+  s.camera.position = camera;
+  s.camera.target = target;
+  s.camera.fovYDegrees = fov;
+  return s;
+}
+
+// Where a wave draws the water below its rest level at a lit wall, the wall
+// between the two is in the air, in the whole sun. Read as under the water,
+// the caustics' mesh once stopping half a cell short of the walls, it drew
+// a dark line across the wall at the rest level. A drop against the wall at
+// x = -2, seen from across the pool: on the pixels of that wall below the
+// rest level seen directly (so in the air), both renderers' ratio is 1;
+// through the water the raster follows the reference.
+TEST_F(CausticsReferenceGpuTest, WallAboveATroughHasTheWholeSun) {
+  const scene::Scene s = troughAt({-2.0f, 0.0f}, 0.6f, {1.2f, 0.9f, 0.6f}, {-2.0f, -0.3f, 0.0f}, 50.0f);
+  const float wall = -0.5f * s.water.extent;
+  std::printf("the wall at x = %.1f:\n", wall);
+  const AboutTheTrough about = ratiosAboutTheTrough(
+      ctx(), s, [&](glm::vec3 p) { return std::abs(p.x - wall) < 1e-3f; },
+      [&](glm::vec3 p) { return p.x - wall < 0.1f; });
+  EXPECT_GT(about.inTheAir, size_t(100));
+  EXPECT_GT(about.throughTheWater, size_t(100));
+  EXPECT_LT(about.reference, 1e-3);
+  EXPECT_LT(about.raster, 1e-3);
+  EXPECT_LT(about.rmsThroughTheWater, 1.0);
+}
+
+// The same for a sphere half in the water, the water drawn down around it.
+TEST_F(CausticsReferenceGpuTest, SphereAboveItsTroughHasTheWholeSun) {
+  scene::Scene s = troughAt({0.0f, 0.0f}, 0.9f, {1.6f, 0.6f, 1.6f}, {0.0f, -0.15f, 0.0f}, 30.0f);
+  const scene::Sphere sphere{.center = {0.0f, s.water.level, 0.0f}, .radius = 0.4f};
+  s.spheres = {sphere};
+  std::printf("the sphere:\n");
+  const AboutTheTrough about = ratiosAboutTheTrough(
+      ctx(), s, [&](glm::vec3 p) { return std::abs(glm::distance(p, sphere.center) - sphere.radius) < 1e-3f; },
+      [&](glm::vec3 p) { return glm::distance(p, sphere.center) - sphere.radius < 0.1f; });
+  EXPECT_GT(about.inTheAir, size_t(100));
+  EXPECT_GT(about.throughTheWater, size_t(100));
+  EXPECT_LT(about.reference, 1e-3);
+  EXPECT_LT(about.raster, 1e-3);
+  EXPECT_LT(about.rmsThroughTheWater, 1.0);
 }
 
 }  // namespace tp::test

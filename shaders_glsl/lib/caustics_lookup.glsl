@@ -6,11 +6,12 @@
 #include "shared/shading.h"
 
 // The ratio at world point p's light line (shared/shading.h's causticsUv),
-// bilinear between the texels the water's light reaches. The others are
-// lines no light through the water meets: where the water stands below its
-// rest level at a wall, the wall between the two is in the air. Read with
-// the rest, they drew a dark line across the wall there. Where none of the
-// four reaches, the sun comes whole.
+// for p under the water: bilinear between the texels the water's light
+// reaches. The others hold no light line of the water: past the line the
+// water's edge at a wall sends its light to, where the wall stands in the
+// air above a wave drawn down. Read with the rest, they darkened the wall
+// just under the water there. Where none of the four is reached, the sun
+// comes whole.
 float causticsRatio(sampler2D caustics, PoolParams pool, vec3 toSun, vec3 p) {
   const vec2 uv = causticsUv(pool, toSun, p);
   const vec2 f = fract(uv * vec2(textureSize(caustics, 0)) - 0.5);
@@ -19,13 +20,6 @@ float causticsRatio(sampler2D caustics, PoolParams pool, vec3 toSun, vec3 p) {
   const vec4 weight = bilinear * vec4(greaterThan(textureGather(caustics, uv, 1), vec4(0.0)));
   const float reached = dot(weight, vec4(1.0));
   return reached > 0.0 ? dot(weight, textureGather(caustics, uv, 0)) / reached : 1.0;
-}
-
-// The same where the caustics reach p (under the water's rest level, in the
-// pool: shared/shading.h's causticsReach), 1 elsewhere. For surfaces that
-// may lie above the water or below it: the walls, the objects.
-float sunThroughWaves(sampler2D caustics, PoolParams pool, vec3 toSun, vec3 p) {
-  return causticsReach(pool, p) ? causticsRatio(caustics, pool, toSun, p) : 1.0;
 }
 
 #endif

@@ -23,7 +23,7 @@ struct PoolParams {
   vec4 mortarAlbedo;   // rgb; w unused
   vec4 wallGloss;      // x: the walls' specular, y: their roughness (shared/glossy.h)
   vec4 water;  // x: the water's rest level, y: its index of refraction (the caustics' light lines), z: their reach
-               // (pool_model's causticsReach); w unused
+               // (pool_model's causticsReach); w: the water's cells a side (0: no water simulated)
   // The water's medium for rays that carry no WaterSurfaceParams (the glass's):
   vec4 extinction;      // rgb: absorption plus scattering, 1/m; w: the scattered sun's shadow pieces
   vec4 scattering;      // rgb: 1/m; w: the phase's anisotropy (water_scattering.h)

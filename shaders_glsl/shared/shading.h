@@ -76,11 +76,6 @@ TP_INLINE vec2 causticsUv(PoolParams pool, vec3 toSun, vec3 p) {
   return line / (2.0f * pool.box.x) + 0.5f;
 }
 
-// Whether the caustics reach p: under the water's rest level, inside the pool.
-TP_INLINE bool causticsReach(PoolParams pool, vec3 p) {
-  return p.y < pool.water.x && max(abs(p.x), abs(p.z)) <= pool.box.x;
-}
-
 // The walls see the sky above the horizon on their side (half of it, for a
 // uniform sky); the pool's own rim is not counted. `footprint`: the pixel's
 // on the wall, in metres along and down it (0 point-samples the bricks).

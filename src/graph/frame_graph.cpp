@@ -60,6 +60,8 @@ UseInfo info(Use use) {
       return {{S::eComputeShader, A::eUniformRead}, L::eGeneral, true, false};
     case Use::VertexStorageRead:
       return {{S::eVertexShader, A::eShaderStorageRead}, L::eGeneral, true, false};
+    case Use::FragmentStorageRead:
+      return {{S::eFragmentShader, A::eShaderStorageRead}, L::eGeneral, true, false};
     case Use::TransferRead:
       return {{S::eCopy, A::eTransferRead}, L::eTransferSrcOptimal, true, false};
     case Use::TransferWrite:

@@ -18,6 +18,7 @@ enum class Use {
   DepthWrite,            // depth attachment, cleared, tested and written
   DepthReadWrite,        // depth attachment, loaded, tested and written
   VertexStorageRead,     // storage buffer read in the vertex stage
+  FragmentStorageRead,   // storage buffer read in the fragment stage
   FragmentUniformRead,   // buffer read as a uniform buffer in the fragment stage
   ComputeUniformRead,    // buffer read as a uniform buffer in the compute stage
   TransferRead,          // source of a copy

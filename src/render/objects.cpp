@@ -13,7 +13,8 @@ Objects::Objects(const gpu::Context& ctx, FragmentNeeds needs, const PoolDraw& p
       boxes_(
           gpu::createGraphicsPipeline(ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), needs))),
       poolUniforms_(pool.uniforms),
-      caustics_(pool.caustics) {}
+      caustics_(pool.caustics),
+      waterCells_(pool.waterCells) {}
 
 void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
                       const ObjectsInView& inView) const {
@@ -25,7 +26,8 @@ void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fr
                                    .uniformBuffer(1, in.medium, Use::FragmentUniformRead)
                                    .sampledImage(2, in.glossy, in.equirect, Use::FragmentSample)
                                    .constantBuffer(3, *poolUniforms_)
-                                   .sampledImage(4, caustics_, in.clamp, Use::FragmentSample);
+                                   .sampledImage(4, caustics_, in.clamp, Use::FragmentSample)
+                                   .storageBuffer(5, waterCells_, Use::FragmentStorageRead);
                return [this, targets, &set, &inView](PassContext& pc) {
                  drawSurfaces(pc.cmd, targets, false,
                               [&] { drawObjects(pc.cmd, pc.descriptors, spheres_, boxes_, set, inView); });

@@ -29,6 +29,7 @@ class Objects {
   gpu::Pipeline spheres_, boxes_;
   const gpu::Buffer* poolUniforms_;
   GraphImage caustics_;
+  SwappingBuffer waterCells_;
 };
 
 // Each sphere, then each box, with `set` holding what either pipeline reads.

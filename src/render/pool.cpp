@@ -9,11 +9,12 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
+#include "shared/water.h"
 
 namespace tp::render {
 
 Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
-           const gpu::Buffer& objects)
+           const gpu::Buffer& objects, const SwappingBuffer& waterCells)
     : floorMesh_(ctx, kPoolFloorGrid, false, "pool floor"),
       walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
       floor_(gpu::createGraphicsPipeline(
@@ -34,7 +35,7 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
                                       gpu::MemoryUse::Upload, "pool uniforms");
   floorVertices_ = gpu::createFilledBuffer(ctx, model.floorVertices, vk::BufferUsageFlagBits::eStorageBuffer,
                                            gpu::MemoryUse::Device, "pool floor vertices");
-  draw_ = PoolDraw{&uniforms_, &objects, &floorMesh_, &floorVertices_, {}};
+  draw_ = PoolDraw{&uniforms_, &objects, &floorMesh_, &floorVertices_, {}, waterCells};
   if (scene.render.caustics) {
     caustics_ =
         gpu::createImage2D(ctx, {kCausticsSize, kCausticsSize}, kCausticsFormat,
@@ -87,7 +88,8 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .sampledImage(2, draw_.caustics, in.clamp, Use::FragmentSample)
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
                         .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
-                        .constantStorageBuffer(5, floorVertices_);
+                        .constantStorageBuffer(5, floorVertices_)
+                        .storageBuffer(6, draw_.waterCells, Use::FragmentStorageRead);
     return [this, targets, &set, drawn](PassContext& pc) {
       const Drawn how = drawn();
       const gpu::Pipeline* floorPipeline = how.floor == Floor::Lit              ? &floor_
@@ -115,8 +117,16 @@ NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& ob
   floorVertices_ = gpu::createFilledBuffer(ctx, vertex, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device,
                                            "no pool floor vertices");
   caustics_ = uploadSkyImage(ctx, SkyImage{1, 1, {glm::vec4(1.0f)}}, "no caustics");
-  draw_ = PoolDraw{&uniforms_, &objects, nullptr, &floorVertices_,
-                   graph.image("caustics", caustics_, vk::ImageLayout::eShaderReadOnlyOptimal)};
+  const std::vector<shader::WaterCell> cell(1, shader::WaterCell{});
+  waterCell_ = gpu::createFilledBuffer(ctx, cell, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Device,
+                                       "no water cells");
+  draw_ = PoolDraw{
+      &uniforms_,
+      &objects,
+      nullptr,
+      &floorVertices_,
+      graph.image("caustics", caustics_, vk::ImageLayout::eShaderReadOnlyOptimal),
+      {{graph.buffer("no water cells", waterCell_).ref}, [this]() -> const gpu::Buffer& { return waterCell_; }}};
 }
 
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,

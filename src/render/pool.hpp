@@ -21,21 +21,24 @@ constexpr uint32_t kCoverVertices = 6;  // pool_cover.vert: one quad
 
 // What other passes need of the pool: its uniforms, the objects the rays
 // cast in shaders meet (the renderer's, filled before each frame), the floor
-// grid and its vertices, and the caustics (the caustics pass's target, or
-// one texel of 1 when the scene has caustics off).
+// grid and its vertices, the caustics (the caustics pass's target, or one
+// texel of 1 when the scene has caustics off), and the water's cells, which
+// say what lies under its surface (lib/sun_through_waves.glsl).
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
   const gpu::Buffer* objects = nullptr;
   const GridMesh* floor = nullptr;             // the floor grid at the frame's step
   const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (PoolModel::floorVertices)
   GraphImage caustics;
+  SwappingBuffer waterCells;
 };
 
 class Pool {
  public:
   // `objects`: the objects the rays cast in shaders meet (shader::SceneObjects).
+  // `waterCells`: the simulation's state (WaterDraw::state).
   Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
-       const gpu::Buffer& objects);
+       const gpu::Buffer& objects, const SwappingBuffer& waterCells);
   const PoolDraw& draw() const { return draw_; }
   // The caustics pass, when the scene has caustics.
   void declareCaustics(FrameGraph& graph, const WaterDraw& water, const FrameInputs& in) const;
@@ -82,14 +85,14 @@ class Pool {
 // What stands for the pool in a scene without one, for the passes that read
 // it whatever the scene (the objects, the glass): uniforms of zero but for
 // the ground (no hole, no water: no caustics reach anything), one floor
-// vertex, one caustics texel of 1.
+// vertex, one caustics texel of 1, one water cell.
 class NoPool {
  public:
   NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& objects, const shader::GroundParams& ground);
   const PoolDraw& draw() const { return draw_; }
 
  private:
-  gpu::Buffer uniforms_, floorVertices_;
+  gpu::Buffer uniforms_, floorVertices_, waterCell_;
   gpu::Image caustics_;
   PoolDraw draw_;
 };

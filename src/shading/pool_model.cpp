@@ -58,7 +58,8 @@ PoolModel poolModel(const scene::Scene& scene) {
       .brickAlbedo = glm::vec4(p.brickAlbedo, p.dirt),
       .mortarAlbedo = glm::vec4(p.mortarAlbedo, 0.0f),
       .wallGloss = {p.wallSpecular, p.wallRoughness, 0.0f, 0.0f},
-      .water = {scene.water.level, scene.water.ior, causticsReach(scene, kCausticsSize), 0.0f},
+      .water = {scene.water.level, scene.water.ior, causticsReach(scene, kCausticsSize),
+                scene.water.enabled ? float(scene.water.grid) : 0.0f},
       .extinction =
           glm::vec4(scene.water.absorption + scene.water.scattering, float(scene.water.scatteringShadowPieces)),
       .scattering = glm::vec4(scene.water.scattering, scene.water.scatteringAnisotropy),
