@@ -58,11 +58,11 @@ float causticsAt(vec3 met) { return causticsRatio(caustics, pool, frame.sunDirec
 float sunUnderWater(vec3 met) { return frameSunShare(met) * causticsAt(met); }
 
 // The pool's wall or floor `hit` met by a ray under the water along t, at
-// `sunShare` of the sun (sunUnderWater); the floor's tiles filtered over
-// `footprint`, the wall's bricks point-sampled.
+// `sunShare` of the sun (sunUnderWater); the floor's tiles and the wall's
+// bricks filtered over `footprint` (hitFootprint).
 vec3 poolSurfaceSeen(PoolHit hit, vec3 t, vec2 footprint, float sunShare) {
   if (hit.floor) return poolFloorRadiance(pool, frame, hit.position, hit.normal, footprint, sunShare);
-  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, vec2(0.0), sunShare), t,
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, hit.position, hit.normal, footprint, sunShare), t,
                         hit.normal, pool.wallGloss.xy);
 }
 
@@ -109,11 +109,11 @@ AirHit airSurface(vec3 p, vec3 r) {
 }
 
 // The ground or a wall met in the air at q along r (AirHit), at `sunShare`
-// of the sun; the ground's checker filtered over `footprint`, the wall's
-// bricks point-sampled.
+// of the sun; the ground's checker and the wall's bricks filtered over
+// `footprint` (hitFootprint).
 vec3 airSurfaceSeen(AirHit hit, vec3 q, vec3 r, vec2 footprint, float sunShare) {
   if (hit.met == kMetGround) return groundRadiance(pool.ground, frame, q.xz, footprint, hit.normal, sunShare);
-  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, q, hit.normal, vec2(0.0), sunShare), r, hit.normal,
+  return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, q, hit.normal, footprint, sunShare), r, hit.normal,
                         pool.wallGloss.xy);
 }
 
@@ -249,14 +249,17 @@ vec3 radianceAbove(vec3 p, vec3 r) {
                         wallNormal, pool.wallGloss.xy);
 }
 
-// The footprint in xz of the pixel where its ray, origin + s dir, meets a
-// surface with normal n: each differential carried along the ray to the
-// surface's tangent plane.
+// The footprint of the pixel where its ray, origin + s dir, meets a surface
+// with normal n, each differential carried along the ray to the surface's
+// tangent plane: in xz on the floor and the ground, along the wall and down
+// it on a wall (shared/pool.h's poolWallCoordinates).
 vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
   const vec3 x = rd.originX + s * rd.directionX, y = rd.originY + s * rd.directionY;
   const float facing = dot(dir, n);
   const vec3 dx = x - dir * (dot(x, n) / facing), dy = y - dir * (dot(y, n) / facing);
-  return abs(dx.xz) + abs(dy.xz);
+  const vec3 spread = abs(dx) + abs(dy);
+  if (abs(n.y) > 0.5) return spread.xz;
+  return vec2(abs(n.x) > 0.5 ? spread.z : spread.x, spread.y);
 }
 
 // What a ray leaving p under the water along t sees: the pool (walls, and the
