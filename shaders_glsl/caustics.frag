@@ -3,9 +3,9 @@
 // the area a patch of the surface sends its light to through flat water over
 // the area it sends it to through the waves (areas from the screen-space
 // derivatives of the two landing points). Added up where folds overlap, and
-// the layers counted (green): a light line no layer reaches (0) is one no
-// light through the water meets, the wall above water drawn down below its
-// rest level (lib/caustics_lookup.glsl).
+// the layers counted (green): no layer (0) reaches the lines past the water's
+// edge at a wall it is drawn down at, which lib/caustics_lookup.glsl's read
+// leaves out.
 layout(location = 0) in vec2 flatLanding;
 layout(location = 1) in vec2 landing;
 layout(location = 0) out vec4 intensity;

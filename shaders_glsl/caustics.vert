@@ -3,11 +3,11 @@
 // Caustics, after Evan Wallace's WebGL Water: each vertex of the water grid
 // reaching the walls (lib/water_grid.glsl) sends the sun's ray, refracted by
 // its normal, down to where it meets the pool (a wall, or the floor: a level
-// plane at the floor's height near the landing), and is drawn in a texture over the pool's square at that point's
-// light line (shared/shading.h's causticsLine: where the flat water's
-// refracted sun line through it crosses the rest level); it also carries its
-// light line through flat water, its own place at rest. The fragment stage
-// compares the two areas. The floor, the walls and the objects under the
+// plane at the floor's height near the landing), and is drawn in a texture
+// over the pool's square at that point's light line (shared/shading.h's
+// causticsLine: where the flat water's refracted sun line through it crosses
+// the rest level); it also carries its light line through flat water, its own
+// place at rest. The fragment stage compares the two areas. The floor, the walls and the objects under the
 // water read the texture at their own light lines.
 #include "shared/frame.h"
 #include "shared/shading.h"

@@ -5,24 +5,26 @@
 #ifndef TP_LIB_SUN_THROUGH_WAVES
 #define TP_LIB_SUN_THROUGH_WAVES
 #include "shared/pool.h"
+#include "shared/water_surface.h"
 #include "lib/caustics_lookup.glsl"
 
 // Whether p lies in the pool under the water's surface: below the surface
-// over it, bilinear between the cells' centres and held at the edge cells'
-// heights out to the walls (as the caustics' mesh reaches them). Above the
-// water a wave draws down, p is in the air, whatever the rest level. With no
-// water simulated, under the rest level.
+// mesh over it (shared/water_surface.h's gridQuadAt and gridQuadHeight, as
+// the camera's medium asks it), held at the edge cells' heights out to the
+// walls (as the caustics' mesh reaches them). Above the water a wave draws
+// down, p is in the air, whatever the rest level. With no water simulated,
+// under the rest level. The walls themselves count: not overWaterSquare.
 bool underTheWater(PoolParams pool, vec3 p) {
   if (max(abs(p.x), abs(p.z)) > pool.box.x) return false;
   const int n = int(pool.water.w);
   if (n < 2) return p.y < pool.water.x;
-  const vec2 g = clamp((p.xz / (2.0 * pool.box.x) + 0.5) * float(n) - 0.5, vec2(0.0), vec2(float(n - 1)));
-  const ivec2 i = min(ivec2(g), ivec2(n - 2));
-  const vec2 f = g - vec2(i);
-  const int k = i.y * n + i.x;
-  const float below = mix(waterCells[k].u, waterCells[k + 1].u, f.x);
-  const float above = mix(waterCells[k + n].u, waterCells[k + n + 1].u, f.x);
-  return p.y < pool.water.x + mix(below, above, f.y);
+  // The grid as the pool's uniforms place it, over the pool's square; only its placement is read.
+  const WaterSurfaceParams grid = WaterSurfaceParams(
+      vec4(-pool.box.x, pool.water.x, -pool.box.x, 2.0 * pool.box.x / float(n)), vec4(0.0), vec4(0.0), uvec4(n, 0, 0, 0));
+  const vec4 quad = gridQuadAt(grid, p.xz);
+  const int k = int(quad.y) * n + int(quad.x);
+  const vec4 corners = vec4(waterCells[k].u, waterCells[k + 1].u, waterCells[k + n].u, waterCells[k + n + 1].u);
+  return p.y < pool.water.x + gridQuadHeight(corners, quad.zw);
 }
 
 // The caustics texture's ratio at p under the water (causticsRatio), 1 above it.

@@ -49,8 +49,9 @@ struct CausticReceivers {
 };
 
 // The caustics of the scene's pool under `water` (its mesh reaching the
-// walls and one normal per vertex: waterSurfaceToTheWalls), on a grid of `size` texels a side over the
-// light lines, each sent photonsPerTexelSide^2 photons.
+// walls and one normal per vertex: waterSurfaceToTheWalls), on a grid of
+// `size` texels a side over the light lines, each sent
+// photonsPerTexelSide^2 photons.
 CausticsMap traceCaustics(const scene::Scene& scene, const scene::Mesh& water,
                           const std::vector<glm::vec3>& waterNormals, const CausticReceivers& receivers, uint32_t size,
                           uint32_t photonsPerTexelSide = kCausticPhotonsPerTexelSide);
