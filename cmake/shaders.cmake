@@ -55,9 +55,12 @@ function(tidepool_water_variants macro suffix)
   set(TIDEPOOL_SHADER_VARIANTS ${TIDEPOOL_SHADER_VARIANTS} PARENT_SCOPE)
 endfunction()
 # The water's rays meeting glass (lib/scene_rays.glsl's backdrop), for
-# scenes with glass spheres: the casts they add cost compile time.
+# scenes with glass spheres or boxes: the casts they add cost compile time.
 tidepool_water_variants(TP_GLASS glass water_surface.frag water_surface_deferred.comp water_surface_apparent.frag
                         water_surface_below.frag)
+# The glass pass's draw of glass boxes (render/glass.cpp): the exact path
+# through a box in place of the sphere's image-space search.
+tidepool_water_variants(TP_GLASS_BOX box glass.frag)
 # The water's passes that write zero into the G-buffer's ambient image where
 # the water is seen, for frames whose resolve pass takes AO after the water
 # (render/frame_resolve.hpp); never with glass, whose frames apply AO before it.

@@ -1,11 +1,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// A glass sphere's front faces: two-interface refraction in image space
-// (Wyman 2005). The view ray is refracted into the glass at the front surface;
-// the exit point is found by a binary search along the refracted ray against
-// the back faces' view depth (glass_back.frag), the exit normal read there;
-// the ray is refracted out (or, under total internal reflection, reflected
-// back in and taken as if it left). The exact Fresnel reflectance of the
+// A glass sphere's or, with TP_GLASS_BOX, a glass box's front faces. A
+// sphere: two-interface refraction in image space (Wyman 2005). The view ray
+// is refracted into the glass at the front surface; the exit point is found
+// by a binary search along the refracted ray against the back faces' view
+// depth (glass_back.frag), the exit normal read there; the ray is refracted
+// out (or, under total internal reflection, reflected back in and taken as
+// if it left). A box: the exact path through it, its faces' reflections
+// inside included (shared/glass.h). The exact Fresnel reflectance of the
 // front surface mixes in the reflected ray. Both rays look up what they meet
 // by the analytic casts the water's rays use (lib/scene_rays.glsl): the
 // ground, the pool, its water as flat at its rest level, the objects, the
@@ -18,8 +20,13 @@ layout(location = 0) out vec4 color;
 // xyz: outward normal of the nearest back face, w: its view depth (0: none).
 layout(binding = 2) uniform sampler2D backFaces;
 layout(binding = 5) uniform Medium { CameraMedium medium; };
+#ifdef TP_GLASS_BOX
+layout(push_constant) uniform Push { GlassBoxParams params; };
+#else
 layout(push_constant) uniform Push { GlassSphereParams params; };
+#endif
 
+#ifndef TP_GLASS_BOX
 // Whether world point p lies in front of the back face under it (inside the
 // glass, the exit not yet passed), with that back face's normal.
 bool beforeBackFace(vec3 p, out vec3 backNormal) {
@@ -31,27 +38,10 @@ bool beforeBackFace(vec3 p, out vec3 backNormal) {
   return back.w > 0.0 && -(frame.view * vec4(p, 1.0)).z < back.w;
 }
 
-// The rays followed from one glass pixel, one after another: its two, and
-// two more at each split (the flat water, another glass sphere) while
-// there is room; past that, the part going into the air is looked up in
-// the sky and the rest left out.
-const int kGlassRays = 6;
-struct GlassRay {
-  vec3 origin, dir;
-  vec3 weight;  // its share of the pixel
-  bool water;   // it starts in the pool's water
-  uint skip;    // the glass sphere it leaves (castObjects)
-};
-
-void main() {
-  const vec3 n = normalize(worldNormal);
-  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
-  const float ior = params.glass.x;
-  const uint self = params.search.y;
-  // The front surface's reflection and refraction; the exit is searched for
-  // below (the exact chord's end and its ray go unused).
-  const GlassPaths entry = glassSpherePaths(view, n, ior);
-  const float reflectance = entry.reflectance;
+// The sphere's paths, the exit searched for in image space (the exact
+// chord's end and its ray go unused).
+GlassExit glassSphereExit(vec3 n, vec3 view) {
+  const GlassPaths entry = glassSpherePaths(view, n, params.glass.x);
   const vec3 inside = entry.inside;
   // The exit lies within the longest chord of the sphere, its diameter. The
   // entry point itself is before the back face behind it.
@@ -69,9 +59,36 @@ void main() {
     }
   }
   // No back face found at all (a sliver at the silhouette): straight through.
-  const vec3 leaving = dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), ior) : inside;
-  const vec3 exitPoint = worldPosition + 0.5 * (before + after) * inside;
-  const vec3 reflected = entry.reflected;
+  const vec3 leaving =
+      dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), params.glass.x) : inside;
+  return GlassExit(entry.reflectance, entry.reflected, worldPosition + 0.5 * (before + after) * inside, leaving);
+}
+#endif
+
+// The rays followed from one glass pixel, one after another: its two, and
+// two more at each split (the flat water, other glass) while
+// there is room; past that, the part going into the air is looked up in
+// the sky and the rest left out.
+const int kGlassRays = 6;
+struct GlassRay {
+  vec3 origin, dir;
+  vec3 weight;  // its share of the pixel
+  bool water;   // it starts in the pool's water
+  uint skip;    // the glass sphere it leaves (castObjects)
+};
+
+void main() {
+  const vec3 n = normalize(worldNormal);
+  const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
+#ifdef TP_GLASS_BOX
+  const GlassExit entry = glassBoxPaths(worldPosition, view, n, params.center, params.halfSize, params.glass.x);
+  const uint self = kSkipNoSphere;
+#else
+  const GlassExit entry = glassSphereExit(n, view);
+  const uint self = params.search.y;
+#endif
+  const float reflectance = entry.reflectance;
+  const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
   // The two rays' footprints, taken here where every lane of the quad runs.
   const RayDifferential footprints[2] =
       RayDifferential[](rayDifferential(exitPoint, leaving), rayDifferential(worldPosition, reflected));
@@ -108,13 +125,13 @@ void main() {
     }
     const bool room = count + 2 <= kGlassRays;
     if (onObject && object.glass > 0.0) {
-      // Another glass sphere: its two exact paths.
-      const GlassPaths g = glassSpherePaths(ray.dir, object.normal, object.glass);
+      // Other glass: its two exact paths.
+      const GlassExit g = glassObjectExit(object, met, ray.dir);
       if (!room) {
         radiance += weight * mix(sky(g.leaving), sky(g.reflected), g.reflectance);
         continue;
       }
-      const vec3 exit = met + g.chord * objects.spheres[object.sphere].w * g.inside;
+      const vec3 exit = g.exitPoint;
       rays[count++] = GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere);
       rays[count++] = GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere);
       continue;

@@ -102,4 +102,13 @@ TEST(BadInput, GlassOfAnImpossibleIndex) {
   EXPECT_NE(line.find("spheres[].ior = 0.9 is outside (1, 3]"), std::string::npos) << line;
 }
 
+// The same for a glass box.
+TEST(BadInput, GlassBoxOfAnImpossibleIndex) {
+  ScratchDir dir;
+  writeText(dir.file("box.json"), "{\"boxes\": [{\"material\": \"glass\", \"ior\": 4}]}");
+  const std::string line =
+      expectCleanFailure("render --out " + dir.file("x.exr") + " --scene " + dir.file("box.json"), dir, {"box.json"});
+  EXPECT_NE(line.find("boxes[].ior = 4 is outside (1, 3]"), std::string::npos) << line;
+}
+
 }  // namespace tp::test

@@ -2,6 +2,8 @@
 // frame checked against the CPU reference.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <map>
 #include <sstream>
 
 #include "process.hpp"
@@ -168,6 +170,33 @@ TEST(ExportCli, MovingSphereDisplacesTheVolumeItOccupies) {
   }
   EXPECT_GT(submerged, 0.05);  // it is well in
   EXPECT_NEAR(waterChange, submerged, 1e-3 * submerged);
+}
+
+// Glass exports as the renderer draws it: clear, smooth and of its own
+// index, whatever albedo its scene entry holds; a Lambertian box keeps its
+// albedo and no index.
+TEST(ExportCli, GlassIsClearAndKeepsItsIndex) {
+  ScratchDir dir;
+  const std::string sceneFile = dir.file("glass.json"), obj = dir.file("glass.obj");
+  writeText(sceneFile, R"({"spheres": [{"material": "glass", "ior": 1.6, "albedo": [0.8, 0.3, 0.2]}],
+    "boxes": [{"center": [1, 0.5, 1], "material": "glass", "ior": 1.7}, {"center": [-1, 0.5, 1]}]})");
+  ProcessResult r = runTidepool("export --validate --scene " + sceneFile + " --out " + obj, dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(dir.file("glass.mtl"));
+  std::map<std::string, std::string> materials;
+  std::string line, name;
+  while (std::getline(in, line)) {
+    if (line.rfind("newmtl ", 0) == 0)
+      name = line.substr(7);
+    else if (!name.empty())
+      materials[name] += line + "\n";
+  }
+  for (const auto& [mesh, ior] : {std::pair{"sphere0", "Ni 1.6"}, std::pair{"box0", "Ni 1.7"}}) {
+    EXPECT_NE(materials[mesh].find(ior), std::string::npos) << materials[mesh];
+    EXPECT_NE(materials[mesh].find("Tf 1 1 1"), std::string::npos) << materials[mesh];
+  }
+  EXPECT_NE(materials["box1"].find("Kd 0.3 0.5 0.7"), std::string::npos) << materials["box1"];
+  EXPECT_EQ(materials["box1"].find("Ni "), std::string::npos) << materials["box1"];
 }
 
 // A sequence runs the water once through the range: each frame as a single

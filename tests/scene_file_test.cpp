@@ -146,6 +146,21 @@ TEST(SceneFile, GlassKeys) {
   EXPECT_NE(errorOf(R"({"render": {"glass_search_steps": 65}})").find("render.glass_search_steps"), std::string::npos);
 }
 
+// Glass boxes: the spheres' two keys, checked the same way.
+TEST(SceneFile, GlassBoxKeys) {
+  const auto s = scene::parseScene(R"({"boxes": [{"material": "glass", "ior": 1.7}, {}]})", "x");
+  ASSERT_EQ(s.boxes.size(), 2u);
+  EXPECT_TRUE(scene::isGlass(s.boxes[0]));
+  EXPECT_EQ(s.boxes[0].ior, 1.7f);
+  EXPECT_FALSE(scene::isGlass(s.boxes[1]));  // lambert by default
+  EXPECT_TRUE(scene::hasGlass(s));
+  EXPECT_FALSE(scene::hasGlass(scene::parseScene(R"({"boxes": [{}]})", "x")));
+  EXPECT_EQ(errorOf(R"({"boxes": [{"material": "metal"}]})"),
+            "shot.json: boxes[].material must be one of lambert, glass, got 'metal'");
+  EXPECT_EQ(errorOf(R"({"boxes": [{"material": "glass", "ior": 1}]})"), "shot.json: boxes[].ior = 1 is outside (1, 3]");
+  EXPECT_EQ(errorOf(R"({"boxes": [{"ior": "glass"}]})"), "shot.json: boxes[0].ior: expected a number, got string");
+}
+
 TEST(SceneFile, UnreadableFiles) {
   EXPECT_THROW(scene::loadSceneFile("/nonexistent/scene.json"), std::runtime_error);
   EXPECT_THROW(scene::loadSceneFile("/tmp"), std::runtime_error);
@@ -217,7 +232,8 @@ TEST(SceneFile, SavedScenesReadBackToTheSameScene) {
   awkward.spheres[0].path = {{0.0f, {0.0f, -0.2f, 0.0f}}, {2.5f, {1.0f / 7.0f, -0.2f, 0.5f}}};
   awkward.spheres.push_back({.center = {0.3f, 0.5f, 0.1f}, .radius = 0.3f, .material = "glass", .ior = 1.0f / 0.7f});
   awkward.render.glassSearchSteps = 13;
-  awkward.boxes = {{.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}, .yawDegrees = 33.3f}};
+  awkward.boxes = {{.center = {-0.8f, 0.2f, 0.6f}, .size = {0.3f, 0.6f, 0.3f}, .yawDegrees = 33.3f},
+                   {.center = {0.8f, 0.1f, -0.6f}, .size = {0.2f, 0.4f, 0.5f}, .material = "glass", .ior = 1.9f}};
   awkward.ao = scene::aoPreset("baseline");
   awkward.ao.radius = 0.7f;
   awkward.render.refraction = "apparent";

@@ -142,8 +142,20 @@ FlatWaterSplit flatWaterSplit(vec3 r, bool fromWater) {
                         refract(r, facing, fromWater ? pool.water.y : 1.0 / pool.water.y));
 }
 
+// A glass sphere or box met at p along `dir`: its exact paths (shared/glass.h).
+// Lavapipe runs both branches for every pixel: the slots are held in range.
+GlassExit glassObjectExit(ObjectHit object, vec3 p, vec3 dir) {
+  if (object.box != kSkipNoSphere) {
+    const uint box = min(object.box, uint(TP_MAX_BOXES - 1));
+    return glassBoxPaths(p, dir, object.normal, objects.boxCenter[box], objects.boxHalfSize[box], object.glass);
+  }
+  const GlassPaths g = glassSpherePaths(dir, object.normal, object.glass);
+  const float radius = objects.spheres[min(object.sphere, uint(TP_MAX_SPHERES - 1))].w;
+  return GlassExit(g.reflectance, g.reflected, p + g.chord * radius * g.inside, g.leaving);
+}
+
 #ifdef TP_GLASS
-// What a glass sphere met by the water's rays shows along one of its exact
+// What a glass sphere or box met by the water's rays shows along one of its exact
 // paths: the backdrop, the scene without its objects, in straight-line code.
 // Lavapipe runs every branch of the water's shader for every pixel (masked)
 // and every loop at least once, so what is written here costs the whole
@@ -205,14 +217,13 @@ vec3 backdrop(vec3 p, vec3 r) {
   return sum + weight * seen * exp(-pool.extinction.rgb * travel);
 }
 
-// A glass sphere met at p along `dir`: the backdrop along its two exact
-// paths (shared/glass.h), one after the other.
+// A glass sphere or box met at p along `dir`: the backdrop along its two
+// exact paths, one after the other.
 vec3 glassSeen(ObjectHit object, vec3 p, vec3 dir) {
-  const GlassPaths g = glassSpherePaths(dir, object.normal, object.glass);
-  const vec3 exit = p + g.chord * objects.spheres[object.sphere].w * g.inside;
+  const GlassExit g = glassObjectExit(object, p, dir);
   vec3 sum = vec3(0.0);
   TP_DONT_UNROLL for (int k = 0; k < 2; ++k) {
-    const vec3 from = k == 0 ? exit : p, along = k == 0 ? g.leaving : g.reflected;
+    const vec3 from = k == 0 ? g.exitPoint : p, along = k == 0 ? g.leaving : g.reflected;
     sum += (k == 0 ? 1.0 - g.reflectance : g.reflectance) * backdrop(from, along);
   }
   return sum;

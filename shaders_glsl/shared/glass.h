@@ -1,15 +1,17 @@
-// Glass spheres: the push constants of their passes and the optics both the
-// raster (glass.frag, Wyman's two-interface refraction in image space) and the
-// CPU reference (render/reference_tracer.cpp, the exact exit point) use, so
-// that the difference between the two measures only how the raster finds the
-// exit point and its normal.
+// Glass spheres and boxes: the push constants of their passes and the optics
+// both the raster (glass.frag: for a sphere Wyman's two-interface refraction
+// in image space, for a box the exact path) and the CPU reference
+// (render/reference_tracer.cpp, the exact exit point) use, so that the
+// difference between the two measures only how the raster finds the exit
+// point and its normal, and what its casts leave out.
 //
 // The model, on both sides: at the front surface the exact unpolarised
 // Fresnel reflectance (not Schlick's fit) splits the view ray into its
 // reflection and its refraction into the glass; the refracted ray leaves at
 // the exit point, refracted out by the exit normal, with no Fresnel loss
 // there; where it cannot leave (total internal reflection) it takes the
-// internally reflected direction instead, once, as if it left that way. Both
+// internally reflected direction instead, once, as if it left that way (a
+// box: it reflects on inside, up to TP_GLASS_BOX_REFLECTIONS times). Both
 // rays that leave, the reflection and the exit ray, look up the scene: the
 // raster by the analytic casts the water's rays use (lib/scene_rays.glsl),
 // the reference by tracing them. Where the raster cannot go on (glass seen
@@ -17,6 +19,7 @@
 #ifndef TP_SHARED_GLASS_H
 #define TP_SHARED_GLASS_H
 #include "shared/interop.h"
+#include "shared/objects.h"
 
 TP_BEGIN
 
@@ -31,6 +34,15 @@ struct GlassSphereParams {
   vec4 glass;          // x: index of refraction
   uvec4 search;        // x: binary-search steps for the exit point (render.glass_search_steps);
                        // y: its slot among SceneObjects' spheres, which its own rays pass by
+};
+
+// Push constants of the glass pass's draw of a glass box. The first 48 bytes
+// are BoxParams', so box.vert draws it unchanged.
+struct GlassBoxParams {
+  vec4 center;    // xyz centre, w yaw (radians)
+  vec4 halfSize;  // xyz
+  vec4 albedo;    // unused (BoxParams' place)
+  vec4 glass;     // x: index of refraction
 };
 
 // Unpolarised Fresnel reflectance of a dielectric interface for a ray meeting
@@ -85,11 +97,69 @@ TP_INLINE bool glassTotalInternalReflection(vec3 t, vec3 nOut, float ior) {
   return ior * ior * (1.0f - cosI * cosI) >= 1.0f;
 }
 
+// What a view ray does at a piece of glass: the front surface's reflection,
+// and the ray that leaves from where it leaves.
+struct GlassExit {
+  float reflectance;  // exact Fresnel at the front surface
+  vec3 reflected;     // from the entry point
+  vec3 exitPoint;
+  vec3 leaving;
+};
+
+// The most reflections inside a glass box before the ray is taken as leaving
+// (by the internally reflected direction, as a sphere's does). A box's faces
+// meet at right angles, so each reflection flips one component of the ray's
+// direction in the box's frame: a ray that entered through a face leaves
+// through the face opposite (where it meets the entry's refracted angle,
+// below the critical one) after reflecting off the faces across its way,
+// which it meets past the critical angle when the index exceeds sqrt 2.
+// Eight is more than a box four times as long as it is wide needs.
+#define TP_GLASS_BOX_REFLECTIONS 8
+
+// The exact paths of a ray, direction dir (unit), meeting a glass box at p on
+// a face of outward normal n: its reflection there, and its refraction in,
+// followed through the box's reflections to the face it leaves by.
+TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 halfSize, float ior) {
+  GlassExit g;
+  g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, ior);
+  g.reflected = reflect(dir, n);
+  // In the box's frame, from p held inside it (round-off may put it out).
+  vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
+  vec3 h = vec3(halfSize);
+  vec3 rel = p - vec3(center);
+  vec3 o = clamp(vec3(dot(rel, ax), rel.y, dot(rel, az)), -h, h);
+  vec3 t = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
+  vec3 d = vec3(dot(t, ax), t.y, dot(t, az));
+  vec3 nOut = vec3(0.0f);
+  TP_DONT_UNROLL for (int k = 0; k <= TP_GLASS_BOX_REFLECTIONS; ++k) {
+    // The nearest of the three faces the ray heads for.
+    float s = 1e30f;
+    int axis = 0;
+    for (int a = 0; a < 3; ++a) {
+      float to = d[a] != 0.0f ? ((d[a] > 0.0f ? h[a] : -h[a]) - o[a]) / d[a] : 1e30f;
+      if (to < s) {
+        s = to;
+        axis = a;
+      }
+    }
+    o = clamp(o + s * d, -h, h);
+    nOut = vec3(0.0f);
+    nOut[axis] = d[axis] > 0.0f ? 1.0f : -1.0f;
+    if (k == TP_GLASS_BOX_REFLECTIONS || !glassTotalInternalReflection(d, nOut, ior)) break;
+    d[axis] = -d[axis];
+  }
+  vec3 leaving = glassExitDirection(d, nOut, ior);
+  g.exitPoint = vec3(center) + o.x * ax + vec3(0.0f, o.y, 0.0f) + o.z * az;
+  g.leaving = leaving.x * ax + vec3(0.0f, leaving.y, 0.0f) + leaving.z * az;
+  return g;
+}
+
 TP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(tp::shader::GlassSphereParams) == 80);
 static_assert(offsetof(tp::shader::GlassSphereParams, glass) == 48);
+static_assert(sizeof(tp::shader::GlassBoxParams) == 64);
 #endif
 
 #endif

@@ -22,12 +22,14 @@ struct ObjectHit {
   vec3 normal;     // unit, world
   vec3 albedo;
   vec2 material;  // x: specular, y: roughness; boxes have none
-  float glass;    // a glass sphere's index of refraction; 0: not glass
+  float glass;    // a glass sphere's or box's index of refraction; 0: not glass
   uint sphere;    // the sphere's slot among the objects; kSkipNoSphere for a box
+  uint box;       // the box's slot; kSkipNoSphere for a sphere
 };
 
 // castObjects' `skip` when no sphere is to be passed by; ObjectHit's
-// `sphere` when the hit is a box or nothing.
+// `sphere` when the hit is a box or nothing, and its `box` when it is a
+// sphere or nothing.
 const uint kSkipNoSphere = 0xffffffffu;
 
 // How far along its ray a sphere is met by a ray that starts inside it: at
@@ -40,7 +42,8 @@ const float kInsideSphereHit = 1e-6f;
 // among the first `counts` (x spheres, y boxes): count.xy for every object,
 // count.zw for those below the rim, which alone rays under the water can meet.
 // Sphere `skip` is passed by: the glass sphere a ray leaves (its origin lies
-// on that sphere, where round-off could put it inside).
+// on that sphere, where round-off could put it inside). A ray leaving a glass
+// box needs no such skip: the slab test meets no box the ray starts in.
 TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3 dir, float limit, uint skip) {
   ObjectHit hit;
   hit.distance = -1.0f;
@@ -49,6 +52,7 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
   hit.material = vec2(0.0f);
   hit.glass = 0.0f;
   hit.sphere = kSkipNoSphere;
+  hit.box = kSkipNoSphere;
   float nearest = limit;
   for (uint i = 0u; i < counts.x; ++i) {
     if (i == skip) continue;
@@ -64,6 +68,7 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
       hit.material = vec2(objects.sphereMaterial[i]);
       hit.glass = objects.sphereMaterial[i].z;
       hit.sphere = i;
+      hit.box = kSkipNoSphere;
     }
   }
   for (uint i = 0u; i < counts.y; ++i) {
@@ -74,8 +79,9 @@ TP_INLINE ObjectHit castObjects(TP_OBJECTS_PARAM uvec2 counts, vec3 origin, vec3
       hit.normal = vec3(b.y, b.z, b.w);
       hit.albedo = vec3(objects.boxAlbedo[i]);
       hit.material = vec2(0.0f);
-      hit.glass = 0.0f;
+      hit.glass = objects.boxHalfSize[i].w;
       hit.sphere = kSkipNoSphere;
+      hit.box = i;
     }
   }
   return hit;

@@ -1,4 +1,4 @@
-// The scene's objects (spheres, Lambertian or glass, and boxes) as the shaders see them:
+// The scene's objects (spheres and boxes, Lambertian or glass) as the shaders see them:
 // a uniform buffer filled once per frame (render/objects_model.cpp) for the
 // rays cast in shaders (the water's reflected and refracted rays), the push
 // constants of their draws, and the ray's tests against a sphere and a box
@@ -20,7 +20,7 @@ struct SceneObjects {
   vec4 sphereAlbedo[TP_MAX_SPHERES];    // rgb
   vec4 sphereMaterial[TP_MAX_SPHERES];  // x: specular, y: roughness (shared/glossy.h); z: glass's index (0: not glass)
   vec4 boxCenter[TP_MAX_BOXES];         // xyz centre, w yaw (radians, about +y, from +x towards -z)
-  vec4 boxHalfSize[TP_MAX_BOXES];       // xyz half the edge lengths in the box's own frame
+  vec4 boxHalfSize[TP_MAX_BOXES];       // xyz half the edge lengths in the box's own frame; w: glass's index (0: not glass)
   vec4 boxAlbedo[TP_MAX_BOXES];         // rgb
 };
 

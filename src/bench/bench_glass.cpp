@@ -37,7 +37,8 @@ int runBenchGlass(const BenchGlassOptions& o) {
   const scene::Scene base = loadScene(o.scene, render::glassSphereView());
   const uint32_t frame = 0;
   const scene::Scene placed = scene::sceneAt(base, 0.0f);
-  if (std::none_of(placed.spheres.begin(), placed.spheres.end(), scene::isGlass)) {
+  if (std::none_of(placed.spheres.begin(), placed.spheres.end(),
+                   [](const scene::Sphere& sphere) { return scene::isGlass(sphere); })) {
     throw std::runtime_error("bench glass: the scene has no glass sphere");
   }
   for (uint32_t steps : o.steps) {

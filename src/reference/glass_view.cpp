@@ -1,7 +1,10 @@
 #include "reference/glass_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "shading/objects_model.hpp"
 
 namespace tp::render {
 
@@ -16,6 +19,17 @@ scene::Scene glassSphereView() {
   return s;
 }
 
+scene::Scene glassBoxView() {
+  scene::Scene s = glassSphereView();
+  s.spheres.clear();
+  s.boxes = {{.center = {0.0f, 0.8f, 0.0f},
+              .size = {1.0f, 0.6f, 0.8f},
+              .yawDegrees = 30.0f,
+              .material = "glass",
+              .ior = 1.5f}};
+  return s;
+}
+
 std::vector<uint8_t> glassPixelMask(const RenderedFrame& aovs, const scene::Scene& placed) {
   std::vector<uint8_t> mask(size_t(aovs.width) * aovs.height, 0);
   if (aovs.position.size() != mask.size() * 4)
@@ -27,6 +41,16 @@ std::vector<uint8_t> glassPixelMask(const RenderedFrame& aovs, const scene::Scen
       if (scene::isGlass(sphere) && std::abs(glm::distance(p, sphere.center) - sphere.radius) < 1e-3f * sphere.radius) {
         mask[k] = 1;
       }
+    }
+    for (const scene::Box& box : placed.boxes) {
+      if (!scene::isGlass(box)) continue;
+      // On a face: in the box's frame, as far out as its half size along one axis.
+      const shader::BoxParams b = boxParams(box);
+      const glm::vec3 rel = p - glm::vec3(b.center);
+      const glm::vec3 local(glm::dot(rel, shader::boxAxisX(b.center.w)), rel.y,
+                            glm::dot(rel, shader::boxAxisZ(b.center.w)));
+      const glm::vec3 out = glm::abs(local) / glm::vec3(b.halfSize);
+      if (std::abs(std::max({out.x, out.y, out.z}) - 1.0f) < 1e-3f) mask[k] = 1;
     }
   }
   return mask;

@@ -14,9 +14,14 @@ namespace tp::render {
 // refracted through it, and the sun reflected on it.
 scene::Scene glassSphereView();
 
+// The same view with a glass box (ior 1.5, 1 x 0.6 x 0.8 m, turned 30
+// degrees) in the sphere's place: the ground's checker through it, moved
+// along and down by its slab, and its sides' reflections inside.
+scene::Scene glassBoxView();
+
 // One byte per pixel, 1 where the frame's first surface (its position AOV,
-// such as the reference's) lies on one of `placed`'s glass spheres (the
-// scene with its spheres where the frame shows them).
+// such as the reference's) lies on one of `placed`'s glass spheres or boxes
+// (the scene with its spheres where the frame shows them).
 std::vector<uint8_t> glassPixelMask(const RenderedFrame& aovs, const scene::Scene& placed);
 
 }  // namespace tp::render

@@ -16,6 +16,7 @@
 #include "shading/frame_uniforms.hpp"
 #include "shading/glossy_model.hpp"
 #include "shading/hammersley.hpp"
+#include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/sky_model.hpp"
 #include "shading/water_model.hpp"
@@ -128,8 +129,14 @@ class Tracer {
     for (auto& mesh : sceneMeshes(scene, water, time)) {
       const Material m = materialOf(mesh.name);
       if (m == Material::Sphere) continue;  // cast exactly instead of their tessellation
+      const scene::Box* box = m == Material::Box ? &placed.boxes.at(boxes++) : nullptr;
+      if (box && scene::isGlass(*box)) {  // cast exactly, and traced through
+        glassBoxes_.push_back(boxParams(*box));
+        glassBoxIor_.push_back(box->ior);
+        continue;
+      }
       materials_.push_back(m);
-      albedo_.push_back(m == Material::Box ? placed.boxes.at(boxes++).albedo : glm::vec3(0.0f));
+      albedo_.push_back(box ? box->albedo : glm::vec3(0.0f));
       if (m == Material::Water) waterMesh_ = int(traced.size());
       traced.push_back(std::move(mesh));
     }
@@ -167,10 +174,23 @@ class Tracer {
         glass = &sphere;
       }
     }
-    if (!glass && !hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
+    // A glass box: the slab test meets none that the ray starts in or on.
+    std::optional<size_t> glassBox;
+    glm::vec3 boxNormal(0.0f);
+    for (size_t b = 0; b < glassBoxes_.size(); ++b) {
+      const glm::vec4 met = shader::rayBox(origin, dir, glassBoxes_[b].center, glassBoxes_[b].halfSize);
+      if (met.x > 0.0f && met.x < distance) {
+        distance = met.x;
+        glassBox = b;
+        boxNormal = glm::vec3(met.y, met.z, met.w);
+        glass = nullptr;
+      }
+    }
+    if (!glass && !glassBox && !hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
     const glm::vec3 p = origin + distance * dir;
-    const glm::vec3 leaving = glass ? glassRadiance(*glass, p, dir, specular, path, first)
-                                    : surfaceRadiance(p, dir, hit, specular, path, first);
+    const glm::vec3 leaving = glassBox ? glassBoxRadiance(*glassBox, boxNormal, p, dir, specular, path, first)
+                              : glass  ? glassRadiance(*glass, p, dir, specular, path, first)
+                                       : surfaceRadiance(p, dir, hit, specular, path, first);
     if (!inWater) return leaving;
     return glm::exp(-extinction_ * distance) * leaving + inScatter(origin, dir, distance, path);
   }
@@ -326,6 +346,20 @@ class Tracer {
     return glm::mix(follow(exit, g.leaving), follow(p, g.reflected), g.reflectance);
   }
 
+  // The same for glass box `b`, met at p on the face of outward normal n:
+  // the exact path through it (shared/glass.h).
+  glm::vec3 glassBoxRadiance(size_t b, glm::vec3 n, glm::vec3 p, glm::vec3 dir, uint32_t specular, PathSample path,
+                             SurfacePoint* first) const {
+    if (first) *first = {p, n};
+    const shader::GlassExit g =
+        shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize, glassBoxIor_[b]);
+    if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+    auto follow = [&](glm::vec3 from, glm::vec3 d) {
+      return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr);
+    };
+    return glm::mix(follow(g.exitPoint, g.leaving), follow(p, g.reflected), g.reflectance);
+  }
+
   // Whether p lies in the pool's water, below its rest level.
   bool inPoolWater(glm::vec3 p) const {
     return waterMesh_ >= 0 && p.y < level_ && std::max(std::abs(p.x), std::abs(p.z)) <= poolHalf_;
@@ -400,6 +434,8 @@ class Tracer {
   std::unique_ptr<ReferenceScene> surfaceToTheWalls_;  // with caustics: the water reaching the walls
   std::vector<scene::Sphere> spheres_;                 // the Lambertian ones, where they are at the frame's time
   std::vector<scene::Sphere> glass_;                   // the glass ones
+  std::vector<shader::BoxParams> glassBoxes_;          // the glass boxes, cast exactly
+  std::vector<float> glassBoxIor_;                     // their indices of refraction
   std::unique_ptr<ReferenceScene> bvh_;
 };
 

@@ -1,5 +1,6 @@
 #include "render/glass.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "gpu/commands.hpp"
@@ -43,14 +44,28 @@ void drawSpheres(const vk::raii::CommandBuffer& cmd, const gpu::Pipeline& pipeli
   }
 }
 
+// The glass boxes' front faces: box.vert (GlassBoxParams begins with its
+// BoxParams), glass.frag's box variant (TP_GLASS_BOX), which follows the
+// exact path through the box and needs no back faces.
+gpu::GraphicsPipelineDesc glassBoxFront(FragmentNeeds needs) {
+  gpu::GraphicsPipelineDesc desc = glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack, needs);
+  desc.vertexShader = "box.vert";
+  desc.fragmentShader.insert(desc.fragmentShader.rfind('.'), ".box");
+  desc.pushSize = sizeof(shader::GlassBoxParams);
+  return desc;
+}
+
 }  // namespace
 
-Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool)
+Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool,
+             const scene::Scene& scene)
     : pool_(pool),
       back_(gpu::createGraphicsPipeline(ctx,
                                         glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
       front_(gpu::createGraphicsPipeline(
           ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack, glassNeeds(needs)))) {
+  if (std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const scene::Box& b) { return scene::isGlass(b); }))
+    boxFront_.emplace(gpu::createGraphicsPipeline(ctx, glassBoxFront(glassNeeds(needs))));
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
                                   "glass back faces");
@@ -61,8 +76,9 @@ Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, Fra
 }
 
 void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
-                    const std::vector<shader::GlassSphereParams>& spheres) const {
-  auto inView = [&spheres] { return !spheres.empty(); };
+                    const std::vector<shader::GlassSphereParams>& spheres,
+                    const std::vector<shader::GlassBoxParams>& boxes) const {
+  auto inView = [&spheres, &boxes] { return !spheres.empty() || !boxes.empty(); };
   // The nearest back face of any glass sphere, alone: the opaque surfaces do
   // not hide it (a refracted ray may leave behind one of them).
   graph.pass(passes::kGlassBackFaces,
@@ -87,7 +103,7 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
              {.cached = false, .runIf = inView});
   // The front faces over the frame, depth tested against what is drawn.
   graph.pass(passes::kGlass,
-             [this, frame, in, &spheres](PassBuilder& pass) {
+             [this, frame, in, &spheres, &boxes](PassBuilder& pass) {
                const gpu::Image& color = pass.attach(frame.color, Use::ColorReadWrite);
                const gpu::Image& depth = pass.attach(frame.depth, Use::DepthReadWrite);
                Bindings& set = pass.bindings()
@@ -100,11 +116,21 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                                    .sampledImage(6, pool_.caustics, in.clamp, Use::FragmentSample)
                                    .sampledImage(7, in.glossy, in.equirect, Use::FragmentSample)
                                    .constantStorageBuffer(8, *pool_.floorVertices);
-               return [this, &color, &depth, &set, &spheres](PassContext& pc) {
+               return [this, &color, &depth, &set, &spheres, &boxes](PassContext& pc) {
                  drawOver(pc.cmd, color, depth, [&] {
-                   pc.cmd.bindPipeline(front_.bindPoint, *front_.pipeline);
-                   set.bind(pc.cmd, front_, pc.descriptors);
-                   drawSpheres(pc.cmd, front_, spheres);
+                   if (!spheres.empty()) {
+                     pc.cmd.bindPipeline(front_.bindPoint, *front_.pipeline);
+                     set.bind(pc.cmd, front_, pc.descriptors);
+                     drawSpheres(pc.cmd, front_, spheres);
+                   }
+                   if (boxFront_ && !boxes.empty()) {
+                     pc.cmd.bindPipeline(boxFront_->bindPoint, *boxFront_->pipeline);
+                     set.bind(pc.cmd, *boxFront_, pc.descriptors);
+                     for (const auto& box : boxes) {
+                       gpu::bindPipeline(pc.cmd, *boxFront_, box);
+                       gpu::draw(pc.cmd, kBoxVertices);
+                     }
+                   }
                  });
                };
              },

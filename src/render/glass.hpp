@@ -3,9 +3,11 @@
 // pass draws their back faces into a normal and view-depth target, then a
 // pass draws their front faces over the frame, each pixel searching that
 // target for where its refracted ray leaves (shaders_glsl/glass_back.frag,
-// glass.frag), and the rays that leave look up the scene by the analytic
-// casts the water's rays use. Declared only for a scene with glass; recorded
-// only for a frame with glass spheres in view.
+// glass.frag); glass boxes, drawn in the second pass, follow the exact path.
+// The rays that leave look up the scene by the analytic casts the water's
+// rays use. Declared only for a scene with glass; recorded only for a frame
+// with glass in view.
+#include <optional>
 #include <vector>
 
 #include "render/pool.hpp"
@@ -22,16 +24,20 @@ class Glass {
   // `needs`: the shadows and the water's scattering (no G-buffer: glass is
   // drawn after AO). `pool`: the pool, or NoPool's stand-ins (their
   // uniforms hold the ground the rays leaving the glass meet).
-  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool);
-  // `spheres`: the glass spheres in view when the frame records.
+  // `scene`: whether it has glass boxes.
+  Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool,
+        const scene::Scene& scene);
+  // `spheres`, `boxes`: the glass in view when the frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameInputs& in,
-               const std::vector<shader::GlassSphereParams>& spheres) const;
+               const std::vector<shader::GlassSphereParams>& spheres,
+               const std::vector<shader::GlassBoxParams>& boxes) const;
 
  private:
   gpu::Image backFaces_, depth_;
   PoolDraw pool_;
   GraphImage backFacesRef_, depthRef_;
   gpu::Pipeline back_, front_;
+  std::optional<gpu::Pipeline> boxFront_;  // for a scene with glass boxes
 };
 
 }  // namespace tp::render

@@ -121,8 +121,8 @@ struct Renderer::Resources {
     // instead), before the water, which draws over what of it is under the
     // surface.
     if (scene::hasGlass(scene)) {
-      glass.emplace(ctx, graph, frame, needs, *poolDraw);
-      glass->declare(graph, surfaces, in, glassInView);
+      glass.emplace(ctx, graph, frame, needs, *poolDraw, scene);
+      glass->declare(graph, surfaces, in, glassInView, glassBoxesInView);
     }
     if (waterSurface) waterSurface->declare(graph, surfaces, pool->draw(), in);
     // The AO when it is taken after the water, the air between the camera
@@ -240,6 +240,7 @@ struct Renderer::Resources {
     opaqueInView = {};
     aovInView = {};
     glassInView.clear();
+    glassBoxesInView.clear();
     // Objects wholly over the water are left out of the casts under it.
     const shader::SceneObjects casts =
         sceneObjects(placed, skipping && water ? water->top() : std::numeric_limits<float>::infinity());
@@ -254,11 +255,14 @@ struct Renderer::Resources {
       aovInView.spheres.push_back(sphereParams(sphere));
     }
     for (const auto& box : placed.boxes) {
-      if (!skipping || frustum.mayShow(box.center, 0.5f * glm::length(box.size))) {
+      if (skipping && !frustum.mayShow(box.center, 0.5f * glm::length(box.size))) continue;
+      if (scene::isGlass(box)) {
+        glassBoxesInView.push_back(glassBoxParams(box));
+      } else {
         opaqueInView.boxes.push_back(boxParams(box));
       }
+      aovInView.boxes.push_back(boxParams(box));
     }
-    aovInView.boxes = opaqueInView.boxes;
   }
 
   // The water's and the floor's grids as finely as this frame shows them
@@ -364,6 +368,7 @@ struct Renderer::Resources {
   ObjectsInView opaqueInView;  // the opaque spheres and the boxes in view
   ObjectsInView aovInView;     // every sphere in view, glass too, and the boxes
   std::vector<shader::GlassSphereParams> glassInView;
+  std::vector<shader::GlassBoxParams> glassBoxesInView;
   bool mediumMayNotBeAir = false;            // the camera medium pass last ran with the camera over the water
   OpaqueGeometry geometry;                   // the frame being recorded's
   std::optional<OpaqueGeometry> aoGeometry;  // the frame's where the SSAO last ran

@@ -209,6 +209,13 @@ void validatePool(const Scene& s) {
   }
 }
 
+// Glass's index of refraction: over the air's, and no more than 3.
+void requireGlassIndex(float ior, const char* field) {
+  if (!(ior > 1.0f && ior <= 3.0f)) {
+    throw std::runtime_error(std::string(field) + " = " + base::numberText(ior) + " is outside (1, 3]");
+  }
+}
+
 void validateSpheres(const Scene& s) {
   if (s.spheres.size() > TP_MAX_SPHERES) {
     throw std::runtime_error("spheres: at most " + std::to_string(TP_MAX_SPHERES) + ", got " +
@@ -219,9 +226,7 @@ void validateSpheres(const Scene& s) {
     requireRange(sphere.radius, 1e-4f, 1e3f, "spheres[].radius");
     requireNonNegative(sphere.albedo, "spheres[].albedo");
     requireOneOf(sphere.material, choices::kMaterial, "spheres[].material");
-    if (!(sphere.ior > 1.0f && sphere.ior <= 3.0f)) {
-      throw std::runtime_error("spheres[].ior = " + base::numberText(sphere.ior) + " is outside (1, 3]");
-    }
+    requireGlassIndex(sphere.ior, "spheres[].ior");
     requireRange(sphere.specular, 0.0f, 1.0f, "spheres[].specular");
     requireRange(sphere.roughness, 0.0f, 1.0f, "spheres[].roughness");
     for (size_t k = 0; k < sphere.path.size(); ++k) {
@@ -246,6 +251,8 @@ void validateBoxes(const Scene& s) {
     requireRange(box.size.z, 1e-4f, 1e3f, "boxes[].size.z");
     requireRange(box.yawDegrees, -360.0f, 360.0f, "boxes[].yaw");
     requireNonNegative(box.albedo, "boxes[].albedo");
+    requireOneOf(box.material, choices::kMaterial, "boxes[].material");
+    requireGlassIndex(box.ior, "boxes[].ior");
   }
 }
 

@@ -152,15 +152,20 @@ glm::vec3 sphereCenterAt(const Sphere& sphere, float t);
 
 inline bool isGlass(const Sphere& sphere) { return sphere.material == "glass"; }
 
-// A Lambertian box, turned about the vertical by `yaw`; it stands still, and
-// the simulated water passes through it (it is drawn over the water inside it).
+// A box, Lambertian or glass (docs/glass.md), turned about the vertical by
+// `yaw`; it stands still, and the simulated water passes through it (it is
+// drawn over the water inside it).
 struct Box {
   glm::vec3 center{0.0f};
-  glm::vec3 size{0.5f};     // edge lengths along its own x, y, z (metres)
-  float yawDegrees = 0.0f;  // about +y, from +x towards -z
-  glm::vec3 albedo{0.3f, 0.5f, 0.7f};
+  glm::vec3 size{0.5f};                // edge lengths along its own x, y, z (metres)
+  float yawDegrees = 0.0f;             // about +y, from +x towards -z
+  glm::vec3 albedo{0.3f, 0.5f, 0.7f};  // of a lambert box
+  std::string material = "lambert";    // lambert | glass
+  float ior = 1.5f;                    // of a glass box, in (1, 3]
   bool operator==(const Box&) const = default;
 };
+
+inline bool isGlass(const Box& box) { return box.material == "glass"; }
 
 // A raised-cosine drop into the water. Frame 0: part of the starting state
 // (added to flat water, which then starts at rest). Frame k >= 1: added to the
@@ -284,8 +289,11 @@ Scene sceneAt(const Scene& scene, float t);
 // frame times (cameraAt).
 Camera cameraAtFrame(const Scene& scene, uint32_t frame);
 
-// Whether any of the scene's spheres is glass.
-inline bool hasGlass(const Scene& scene) { return std::any_of(scene.spheres.begin(), scene.spheres.end(), isGlass); }
+// Whether any of the scene's spheres or boxes is glass.
+inline bool hasGlass(const Scene& scene) {
+  return std::any_of(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return isGlass(s); }) ||
+         std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const Box& b) { return isGlass(b); });
+}
 
 // Throws with the field and the bound on the first impossible value.
 void validateScene(const Scene& scene);

@@ -180,6 +180,8 @@ void visitBoxKeys(R& r, Box& box) {
   r.vec3("size", box.size);
   r.number("yaw", box.yawDegrees);
   r.color("albedo", box.albedo);
+  r.choice("material", box.material, choices::kMaterial);
+  r.number("ior", box.ior);
 }
 
 template <typename V>

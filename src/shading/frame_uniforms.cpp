@@ -13,7 +13,10 @@ bool spheresCastShadows(const scene::Scene& scene) {
                                              [](const scene::Sphere& s) { return !scene::isGlass(s); });
 }
 
-bool boxesCastShadows(const scene::Scene& scene) { return scene.render.shadows && !scene.boxes.empty(); }
+bool boxesCastShadows(const scene::Scene& scene) {
+  return scene.render.shadows &&
+         std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const scene::Box& b) { return !scene::isGlass(b); });
+}
 
 bool castsShadows(const scene::Scene& scene) {
   return spheresCastShadows(scene) || boxesCastShadows(scene) || (scene.render.shadows && hasPool(scene));
@@ -29,11 +32,12 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
     if (scene::isGlass(s) || spheres == TP_MAX_SPHERES) continue;
     c.spheres[spheres++] = glm::vec4(scene::sphereCenterAt(s, time), s.radius);
   }
-  const uint32_t boxes = uint32_t(std::min<size_t>(scene.boxes.size(), TP_MAX_BOXES));
-  for (uint32_t b = 0; b < boxes; ++b) {
-    const shader::BoxParams box = boxParams(scene.boxes[b]);
-    c.boxCenter[b] = box.center;
-    c.boxHalfSize[b] = box.halfSize;
+  uint32_t boxes = 0;
+  for (const scene::Box& b : scene.boxes) {
+    if (scene::isGlass(b) || boxes == TP_MAX_BOXES) continue;
+    const shader::BoxParams box = boxParams(b);
+    c.boxCenter[boxes] = box.center;
+    c.boxHalfSize[boxes++] = box.halfSize;
   }
   const bool pool = hasPool(scene);
   c.sun = glm::vec4(c.sun.x, float(spheres), float(boxes), pool ? 1.0f : 0.0f);

@@ -25,7 +25,7 @@ shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop) {
   for (size_t i = 0; i < boxes.size(); ++i) {
     const shader::BoxParams box = boxParams(boxes[i]);
     objects.boxCenter[i] = box.center;
-    objects.boxHalfSize[i] = box.halfSize;
+    objects.boxHalfSize[i] = glm::vec4(glm::vec3(box.halfSize), scene::isGlass(boxes[i]) ? boxes[i].ior : 0.0f);
     objects.boxAlbedo[i] = box.albedo;
   }
   return objects;
@@ -67,6 +67,11 @@ shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigne
   const shader::SphereParams shape = sphereParams(sphere);
   return {shape.sphere, shape.albedo, shape.tessellation, glm::vec4(sphere.ior, 0.0f, 0.0f, 0.0f),
           glm::uvec4(searchSteps, slot, 0u, 0u)};
+}
+
+shader::GlassBoxParams glassBoxParams(const scene::Box& box) {
+  const shader::BoxParams shape = boxParams(box);
+  return {shape.center, shape.halfSize, shape.albedo, glm::vec4(box.ior, 0.0f, 0.0f, 0.0f)};
 }
 
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name) {

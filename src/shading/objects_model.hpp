@@ -32,6 +32,8 @@ shader::BoxParams boxParams(const scene::Box& box);
 // A glass sphere's draw, with the binary search's steps (render.glass_search_steps)
 // and its slot among the objects the glass's own rays pass by (sphereSlot).
 shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps, uint32_t slot);
+// A glass box's draw.
+shader::GlassBoxParams glassBoxParams(const scene::Box& box);
 // The sphere as sphere.vert tessellates it, the box as box.vert draws it.
 scene::Mesh sphereMesh(const scene::Sphere& sphere, const std::string& name);
 scene::Mesh boxMesh(const scene::Box& box, const std::string& name);

@@ -60,6 +60,12 @@ scene::ShadedMesh floorMesh(scene::Mesh mesh, const scene::Scene& scene) {
   return m;
 }
 
+// Glass as the renderer draws it: clear (it filters no colour out of the
+// light through it) and smooth, of index `ior`.
+scene::SurfaceMaterial clearGlass(float ior) {
+  return {.albedo = glm::vec3(1.0f), .specular = 1.0f, .roughness = 0.0f, .ior = ior};
+}
+
 // sphereMesh's grid of (stacks + 1) x (slices + 1) vertices: u the longitude
 // from +x towards +z, v the latitude from the south pole (0) to the north (1).
 scene::ShadedMesh sphereShaded(scene::Mesh mesh, const scene::Sphere& s) {
@@ -70,7 +76,9 @@ scene::ShadedMesh sphereShaded(scene::Mesh mesh, const scene::Sphere& s) {
     m.normals.push_back((m.mesh.positions[k] - s.center) / s.radius);
     m.uvs.push_back({float(k % row) / float(kSphereSlices), 1.0f - float(k / row) / float(kSphereStacks)});
   }
-  m.material = {.albedo = s.albedo, .specular = s.specular, .roughness = s.roughness, .ior = isGlass(s) ? s.ior : 0.0f};
+  m.material = isGlass(s)
+                   ? clearGlass(s.ior)
+                   : scene::SurfaceMaterial{.albedo = s.albedo, .specular = s.specular, .roughness = s.roughness};
   return m;
 }
 
@@ -98,7 +106,7 @@ scene::ShadedMesh boxShaded(const scene::Mesh& mesh, const scene::Box& box) {
                                        glm::dot(q - center, axes[va]) / (2.0f * half[va])));
     }
   }
-  m.material.albedo = box.albedo;
+  m.material = isGlass(box) ? clearGlass(box.ior) : scene::SurfaceMaterial{.albedo = box.albedo};
   return m;
 }
 
