@@ -72,10 +72,14 @@ GlassExit glassSphereExit(vec3 n, vec3 view) {
 const int kGlassRays = 6;
 struct GlassRay {
   vec3 origin, dir;
-  vec3 weight;  // its share of the pixel
-  bool water;   // it starts in the pool's water
-  uint skip;    // the glass sphere it leaves (castObjects)
+  vec3 weight;           // its share of the pixel
+  bool water;            // it starts in the pool's water
+  uint skip;             // the glass sphere it leaves (castObjects)
+  RayDifferential diff;  // its pixel's footprint, carried from the glass through the flat water
 };
+// Rays split off at other glass: their footprint through a second lens is
+// not followed, and what they meet is sampled at a point.
+const RayDifferential kNoFootprint = RayDifferential(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
 
 void main() {
   const vec3 n = normalize(worldNormal);
@@ -90,11 +94,11 @@ void main() {
   const float reflectance = entry.reflectance;
   const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
   // The two rays' footprints, taken here where every lane of the quad runs.
-  const RayDifferential footprints[2] =
-      RayDifferential[](rayDifferential(exitPoint, leaving), rayDifferential(worldPosition, reflected));
   GlassRay rays[kGlassRays];
-  rays[0] = GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self);
-  rays[1] = GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self);
+  rays[0] = GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self,
+                     rayDifferential(exitPoint, leaving));
+  rays[1] = GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self,
+                     rayDifferential(worldPosition, reflected));
   int count = 2;
   vec3 radiance = vec3(0.0);
   TP_DONT_UNROLL for (int k = 0; k < kGlassRays; ++k) {
@@ -132,8 +136,9 @@ void main() {
         continue;
       }
       const vec3 exit = g.exitPoint;
-      rays[count++] = GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere);
-      rays[count++] = GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere);
+      rays[count++] =
+          GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere, kNoFootprint);
+      rays[count++] = GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere, kNoFootprint);
       continue;
     }
     if (!onObject && (up > 0.0 || airMet.met == kMetWater)) {
@@ -146,9 +151,15 @@ void main() {
           radiance += weight * (ray.water ? (1.0 - reflectance) * sky(split.refracted) : reflectance * sky(split.reflected));
         continue;
       }
+      // The footprint carried on through the plane (Igehy 1999).
+      const vec3 facing = vec3(0.0, ray.water ? -1.0 : 1.0, 0.0);
+      const RayDifferential atWater = transferredDifferential(ray.diff, ray.dir, distance, facing);
+      const float eta = ray.water ? pool.water.y : 1.0 / pool.water.y;
       if (reflectance < 1.0)
-        rays[count++] = GlassRay(met, split.refracted, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere);
-      rays[count++] = GlassRay(met, split.reflected, weight * reflectance, ray.water, kSkipNoSphere);
+        rays[count++] = GlassRay(met, split.refracted, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere,
+                                 refractedDifferential(atWater, ray.dir, split.refracted, facing, eta));
+      rays[count++] = GlassRay(met, split.reflected, weight * reflectance, ray.water, kSkipNoSphere,
+                               reflectedDifferential(atWater, facing));
       continue;
     }
     if (!onObject && !ray.water && airMet.met == kMetNothing) {
@@ -158,7 +169,7 @@ void main() {
     // An opaque surface: one sun share and one footprint for whichever.
     const float sunShare = frameSunShare(met) * (ray.water ? causticsAt(met) : 1.0);
     const vec3 surfaceNormal = ray.water ? poolMet.normal : airMet.normal;
-    const vec2 footprint = k < 2 ? hitFootprint(footprints[k], ray.dir, distance, surfaceNormal) : vec2(0.0);
+    const vec2 footprint = hitFootprint(ray.diff, ray.dir, distance, surfaceNormal);
     vec3 seen;
     if (onObject) {
       seen = objectSeen(object, met, ray.dir, sunShare);

@@ -265,10 +265,8 @@ vec3 radianceAbove(vec3 p, vec3 r) {
 // tangent plane: in xz on the floor and the ground, along the wall and down
 // it on a wall (shared/pool.h's poolWallCoordinates).
 vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
-  const vec3 x = rd.originX + s * rd.directionX, y = rd.originY + s * rd.directionY;
-  const float facing = dot(dir, n);
-  const vec3 dx = x - dir * (dot(x, n) / facing), dy = y - dir * (dot(y, n) / facing);
-  const vec3 spread = abs(dx) + abs(dy);
+  const RayDifferential at = transferredDifferential(rd, dir, s, n);
+  const vec3 spread = abs(at.originX) + abs(at.originY);
   if (abs(n.y) > 0.5) return spread.xz;
   return vec2(abs(n.x) > 0.5 ? spread.z : spread.x, spread.y);
 }
