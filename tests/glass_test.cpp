@@ -294,12 +294,13 @@ TEST_F(GlassTest, ABallLensShowsTheSkyUpsideDown) {
 // Glass is drawn only when a glass sphere is in view; a scene without glass
 // declares nothing of it.
 TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
-  scene::Scene s = render::glassSphereView();
-  s.camera.target = s.camera.position + glm::vec3(0.0f, 0.0f, 1.0f);  // looking away
-  render::Renderer away(ctx(), s, 64, 36);
-  const auto frame = away.render({.frame = 0, .hdr = true});
-  EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlass), nullptr);
-  EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlassBackFaces), nullptr);
+  for (scene::Scene s : {render::glassSphereView(), render::glassBoxView()}) {
+    s.camera.target = s.camera.position + glm::vec3(0.0f, 0.0f, 1.0f);  // looking away
+    render::Renderer away(ctx(), s, 64, 36);
+    const auto frame = away.render({.frame = 0, .hdr = true});
+    EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlass), nullptr);
+    EXPECT_EQ(render::findPass(frame.passes, render::passes::kGlassBackFaces), nullptr);
+  }
   render::Renderer none(ctx(), scene::defaultScene(), 64, 36);
   const auto plain = none.render({.frame = 0, .hdr = true});
   EXPECT_EQ(render::findPass(plain.passes, render::passes::kGlass), nullptr);
@@ -401,10 +402,12 @@ TEST_F(GlassTest, TheFloorThroughGlassAndWaterIsFilteredAtOneSample) {
   EXPECT_LT(e.rmse, kGlassInWaterAtOneSampleBound);
 }
 
-// With nothing skipped (every sphere drawn, in view or not) the glass comes
-// out the same to the bit.
+// With nothing skipped (every sphere and box drawn, in view or not) the
+// glass comes out the same to the bit.
 TEST_F(GlassTest, SkippingChangesNoBitOfTheGlass) {
-  const scene::Scene s = render::glassSphereView();
+  scene::Scene s = render::glassSphereView();
+  s.boxes = render::glassBoxView().boxes;
+  s.boxes[0].center = {1.2f, 0.5f, -0.6f};  // beside the sphere
   render::Renderer skipping(ctx(), s, 64, 36), everything(ctx(), s, 64, 36, {.skipping = false});
   EXPECT_EQ(skipping.render({.frame = 0, .hdr = true}).rgba, everything.render({.frame = 0, .hdr = true}).rgba);
 }
