@@ -208,9 +208,7 @@ TEST_F(CausticsReferenceGpuTest, RasterCausticsMatchTheLightTracedOnes) {
         const glm::vec3 at(position[p * 4], position[p * 4 + 1], position[p * 4 + 2]);
         for (const auto& s : c.scene.spheres) object[p] = object[p] || glm::distance(at, s.center) < s.radius + 1e-3f;
         for (const auto& box : c.scene.boxes) {
-          const float yaw = glm::radians(box.yawDegrees);
-          const glm::vec3 rel = at - box.center;
-          const glm::vec3 local(glm::dot(rel, shader::boxAxisX(yaw)), rel.y, glm::dot(rel, shader::boxAxisZ(yaw)));
+          const glm::vec3 local = shader::toBoxFrame(at - box.center, glm::radians(box.yawDegrees));
           object[p] = object[p] || glm::all(glm::lessThan(glm::abs(local), 0.5f * box.size + 1e-3f));
         }
       }

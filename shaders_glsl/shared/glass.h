@@ -124,12 +124,9 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
   g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, ior);
   g.reflected = reflect(dir, n);
   // In the box's frame, from p held inside it (round-off may put it out).
-  vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
   vec3 h = vec3(halfSize);
-  vec3 rel = p - vec3(center);
-  vec3 o = clamp(vec3(dot(rel, ax), rel.y, dot(rel, az)), -h, h);
-  vec3 t = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
-  vec3 d = vec3(dot(t, ax), t.y, dot(t, az));
+  vec3 o = clamp(toBoxFrame(p - vec3(center), center.w), -h, h);
+  vec3 d = toBoxFrame(refract(dir, n, 1.0f / ior), center.w);  // from air into glass: always refracts
   vec3 nOut = vec3(0.0f);
   TP_DONT_UNROLL for (int k = 0; k <= TP_GLASS_BOX_REFLECTIONS; ++k) {
     // The nearest of the three faces the ray heads for.
@@ -148,9 +145,8 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
     if (k == TP_GLASS_BOX_REFLECTIONS || !glassTotalInternalReflection(d, nOut, ior)) break;
     d[axis] = -d[axis];
   }
-  vec3 leaving = glassExitDirection(d, nOut, ior);
-  g.exitPoint = vec3(center) + o.x * ax + vec3(0.0f, o.y, 0.0f) + o.z * az;
-  g.leaving = leaving.x * ax + vec3(0.0f, leaving.y, 0.0f) + leaving.z * az;
+  g.exitPoint = vec3(center) + fromBoxFrame(o, center.w);
+  g.leaving = fromBoxFrame(glassExitDirection(d, nOut, ior), center.w);
   return g;
 }
 

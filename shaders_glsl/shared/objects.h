@@ -42,6 +42,11 @@ struct BoxParams {
 // A box's frame: its local axes in world space (x and z turned by the yaw about y).
 TP_INLINE vec3 boxAxisX(float yaw) { return vec3(cos(yaw), 0.0f, -sin(yaw)); }
 TP_INLINE vec3 boxAxisZ(float yaw) { return vec3(sin(yaw), 0.0f, cos(yaw)); }
+// A world vector in the frame of a box turned by `yaw`, and back.
+TP_INLINE vec3 toBoxFrame(vec3 v, float yaw) { return vec3(dot(v, boxAxisX(yaw)), v.y, dot(v, boxAxisZ(yaw))); }
+TP_INLINE vec3 fromBoxFrame(vec3 v, float yaw) {
+  return v.x * boxAxisX(yaw) + vec3(0.0f, v.y, 0.0f) + v.z * boxAxisZ(yaw);
+}
 
 // Distance along origin + s dir (dir unit) to the sphere's front surface, or -1.
 TP_INLINE float raySphere(vec3 origin, vec3 dir, vec4 sphere) {
@@ -58,9 +63,7 @@ TP_INLINE float raySphere(vec3 origin, vec3 dir, vec4 sphere) {
 // when missed or when the origin is inside), yzw the world normal there.
 TP_INLINE vec4 rayBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
   vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
-  vec3 rel = origin - vec3(center);
-  vec3 o = vec3(dot(rel, ax), rel.y, dot(rel, az));
-  vec3 d = vec3(dot(dir, ax), dir.y, dot(dir, az));
+  vec3 o = toBoxFrame(origin - vec3(center), center.w), d = toBoxFrame(dir, center.w);
   float sNear = -1e30f, sFar = 1e30f;
   int axis = -1;
   float side = 0.0f;

@@ -110,10 +110,7 @@ TP_INLINE float openingSunVisibility(vec3 p, vec3 toSun, float radius, float h, 
 // Whether origin + s dir meets the box for some s > 0: the slab test without
 // the face it enters by, vector-wide (a shadow ray needs no normal).
 TP_INLINE bool rayMeetsBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
-  vec3 ax = boxAxisX(center.w), az = boxAxisZ(center.w);
-  vec3 rel = origin - vec3(center);
-  vec3 o = vec3(dot(rel, ax), rel.y, dot(rel, az));
-  vec3 d = vec3(dot(dir, ax), dir.y, dot(dir, az));
+  vec3 o = toBoxFrame(origin - vec3(center), center.w), d = toBoxFrame(dir, center.w);
   // Parallel axes: a tiny direction keeps the division finite and the sign right.
   vec3 inverse = 1.0f / max(abs(d), vec3(1e-12f)) * sign(d + vec3(1e-30f));
   vec3 a = (-vec3(halfSize) - o) * inverse, b = (vec3(halfSize) - o) * inverse;

@@ -46,10 +46,7 @@ std::vector<uint8_t> glassPixelMask(const RenderedFrame& aovs, const scene::Scen
       if (!scene::isGlass(box)) continue;
       // On a face: in the box's frame, as far out as its half size along one axis.
       const shader::BoxParams b = boxParams(box);
-      const glm::vec3 rel = p - glm::vec3(b.center);
-      const glm::vec3 local(glm::dot(rel, shader::boxAxisX(b.center.w)), rel.y,
-                            glm::dot(rel, shader::boxAxisZ(b.center.w)));
-      const glm::vec3 out = glm::abs(local) / glm::vec3(b.halfSize);
+      const glm::vec3 out = glm::abs(shader::toBoxFrame(p - glm::vec3(b.center), b.center.w)) / glm::vec3(b.halfSize);
       if (std::abs(std::max({out.x, out.y, out.z}) - 1.0f) < 1e-3f) mask[k] = 1;
     }
   }

@@ -131,8 +131,7 @@ class Tracer {
       if (m == Material::Sphere) continue;  // cast exactly instead of their tessellation
       const scene::Box* box = m == Material::Box ? &placed.boxes.at(boxes++) : nullptr;
       if (box && scene::isGlass(*box)) {  // cast exactly, and traced through
-        glassBoxes_.push_back(boxParams(*box));
-        glassBoxIor_.push_back(box->ior);
+        glassBoxes_.push_back(glassBoxParams(*box));
         continue;
       }
       materials_.push_back(m);
@@ -352,7 +351,7 @@ class Tracer {
                              SurfacePoint* first) const {
     if (first) *first = {p, n};
     const shader::GlassExit g =
-        shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize, glassBoxIor_[b]);
+        shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize, glassBoxes_[b].glass.x);
     if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr);
@@ -434,8 +433,7 @@ class Tracer {
   std::unique_ptr<ReferenceScene> surfaceToTheWalls_;  // with caustics: the water reaching the walls
   std::vector<scene::Sphere> spheres_;                 // the Lambertian ones, where they are at the frame's time
   std::vector<scene::Sphere> glass_;                   // the glass ones
-  std::vector<shader::BoxParams> glassBoxes_;          // the glass boxes, cast exactly
-  std::vector<float> glassBoxIor_;                     // their indices of refraction
+  std::vector<shader::GlassBoxParams> glassBoxes_;     // the glass boxes, cast exactly
   std::unique_ptr<ReferenceScene> bvh_;
 };
 
