@@ -131,7 +131,8 @@ class GlassTest : public GpuTest {
     constexpr uint32_t factor = 4;
     render::Renderer renderer(ctx(), s, width * factor, height * factor);
     const auto raster = renderer.render({.frame = 0, .hdr = true});
-    EXPECT_NE(render::findPass(raster.passes, render::passes::kGlassBackFaces), nullptr);
+    // The back faces for the spheres' search; a box needs none.
+    EXPECT_EQ(render::findPass(raster.passes, render::passes::kGlassBackFaces) != nullptr, scene::hasGlassSpheres(s));
     EXPECT_NE(render::findPass(raster.passes, render::passes::kGlass), nullptr);
     return render::boxDownsample(raster.rgba, width * factor, height * factor, factor);
   }
@@ -291,8 +292,8 @@ TEST_F(GlassTest, ABallLensShowsTheSkyUpsideDown) {
   EXPECT_GT(lower, 5.0 * upper);
 }
 
-// Glass is drawn only when a glass sphere is in view; a scene without glass
-// declares nothing of it.
+// Glass is drawn only when glass is in view, its back faces only when a
+// glass sphere is; a scene without glass declares nothing of it.
 TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
   for (scene::Scene s : {render::glassSphereView(), render::glassBoxView()}) {
     s.camera.target = s.camera.position + glm::vec3(0.0f, 0.0f, 1.0f);  // looking away
@@ -304,6 +305,11 @@ TEST_F(GlassTest, GlassPassesOnlyWhenGlassIsInView) {
   render::Renderer none(ctx(), scene::defaultScene(), 64, 36);
   const auto plain = none.render({.frame = 0, .hdr = true});
   EXPECT_EQ(render::findPass(plain.passes, render::passes::kGlass), nullptr);
+  // A glass box in view needs no back faces.
+  render::Renderer box(ctx(), render::glassBoxView(), 64, 36);
+  const auto boxFrame = box.render({.frame = 0, .hdr = true});
+  EXPECT_NE(render::findPass(boxFrame.passes, render::passes::kGlass), nullptr);
+  EXPECT_EQ(render::findPass(boxFrame.passes, render::passes::kGlassBackFaces), nullptr);
 }
 
 // Tonemapped RMSE over the glass box's pixels, the raster against the

@@ -37,8 +37,7 @@ int runBenchGlass(const BenchGlassOptions& o) {
   const scene::Scene base = loadScene(o.scene, render::glassSphereView());
   const uint32_t frame = 0;
   const scene::Scene placed = scene::sceneAt(base, 0.0f);
-  if (std::none_of(placed.spheres.begin(), placed.spheres.end(),
-                   [](const scene::Sphere& sphere) { return scene::isGlass(sphere); })) {
+  if (!scene::hasGlassSpheres(placed)) {
     throw std::runtime_error("bench glass: the scene has no glass sphere");
   }
   for (uint32_t steps : o.steps) {

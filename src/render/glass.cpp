@@ -1,6 +1,5 @@
 #include "render/glass.hpp"
 
-#include <algorithm>
 #include <array>
 
 #include "gpu/commands.hpp"
@@ -59,12 +58,15 @@ gpu::GraphicsPipelineDesc glassBoxFront(FragmentNeeds needs) {
 
 Glass::Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool,
              const scene::Scene& scene)
-    : pool_(pool),
-      back_(gpu::createGraphicsPipeline(ctx,
-                                        glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront))),
-      front_(gpu::createGraphicsPipeline(
-          ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack, glassNeeds(needs)))) {
-  if (std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const scene::Box& b) { return scene::isGlass(b); }))
+    : pool_(pool) {
+  // Only the pipelines the scene's glass draws with: each takes time to make.
+  if (scene::hasGlassSpheres(scene)) {
+    back_.emplace(
+        gpu::createGraphicsPipeline(ctx, glassSide("glass_back.frag", kGlassBackFormat, vk::CullModeFlagBits::eFront)));
+    front_.emplace(gpu::createGraphicsPipeline(
+        ctx, glassSide("glass.frag", kHdrFormat, vk::CullModeFlagBits::eBack, glassNeeds(needs))));
+  }
+  if (scene::hasGlassBoxes(scene))
     boxFront_.emplace(gpu::createGraphicsPipeline(ctx, glassBoxFront(glassNeeds(needs))));
   backFaces_ = gpu::createImage2D(ctx, frame, kGlassBackFormat,
                                   vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled,
@@ -94,13 +96,14 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                  auto depthTarget = attachment(depth, vk::ImageLayout::eDepthAttachmentOptimal,
                                                vk::AttachmentLoadOp::eClear, vk::ClearValue{.depthStencil = {1.0f, 0}});
                  renderTo(cmd, std::span(&target, 1), &depthTarget, backFaces.extent, [&] {
-                   cmd.bindPipeline(back_.bindPoint, *back_.pipeline);
-                   set.bind(cmd, back_, pc.descriptors);
-                   drawSpheres(cmd, back_, spheres);
+                   cmd.bindPipeline(back_->bindPoint, *back_->pipeline);
+                   set.bind(cmd, *back_, pc.descriptors);
+                   drawSpheres(cmd, *back_, spheres);
                  });
                };
              },
-             {.cached = false, .runIf = inView});
+             // Glass boxes need no back faces.
+             {.cached = false, .runIf = [&spheres] { return !spheres.empty(); }});
   // The front faces over the frame, depth tested against what is drawn.
   graph.pass(passes::kGlass,
              [this, frame, in, &spheres, &boxes](PassBuilder& pass) {
@@ -119,9 +122,9 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                return [this, &color, &depth, &set, &spheres, &boxes](PassContext& pc) {
                  drawOver(pc.cmd, color, depth, [&] {
                    if (!spheres.empty()) {
-                     pc.cmd.bindPipeline(front_.bindPoint, *front_.pipeline);
-                     set.bind(pc.cmd, front_, pc.descriptors);
-                     drawSpheres(pc.cmd, front_, spheres);
+                     pc.cmd.bindPipeline(front_->bindPoint, *front_->pipeline);
+                     set.bind(pc.cmd, *front_, pc.descriptors);
+                     drawSpheres(pc.cmd, *front_, spheres);
                    }
                    if (boxFront_ && !boxes.empty()) {
                      pc.cmd.bindPipeline(boxFront_->bindPoint, *boxFront_->pipeline);

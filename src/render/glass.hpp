@@ -24,7 +24,7 @@ class Glass {
   // `needs`: the shadows and the water's scattering (no G-buffer: glass is
   // drawn after AO). `pool`: the pool, or NoPool's stand-ins (their
   // uniforms hold the ground the rays leaving the glass meet).
-  // `scene`: whether it has glass boxes.
+  // `scene`: whether it has glass spheres, boxes or both.
   Glass(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, FragmentNeeds needs, const PoolDraw& pool,
         const scene::Scene& scene);
   // `spheres`, `boxes`: the glass in view when the frame records.
@@ -36,8 +36,8 @@ class Glass {
   gpu::Image backFaces_, depth_;
   PoolDraw pool_;
   GraphImage backFacesRef_, depthRef_;
-  gpu::Pipeline back_, front_;
-  std::optional<gpu::Pipeline> boxFront_;  // for a scene with glass boxes
+  std::optional<gpu::Pipeline> back_, front_;  // for a scene with glass spheres
+  std::optional<gpu::Pipeline> boxFront_;      // for a scene with glass boxes
 };
 
 }  // namespace tp::render

@@ -289,11 +289,14 @@ Scene sceneAt(const Scene& scene, float t);
 // frame times (cameraAt).
 Camera cameraAtFrame(const Scene& scene, uint32_t frame);
 
-// Whether any of the scene's spheres or boxes is glass.
-inline bool hasGlass(const Scene& scene) {
-  return std::any_of(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return isGlass(s); }) ||
-         std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const Box& b) { return isGlass(b); });
+// Whether any of the scene's spheres, any of its boxes, any of either is glass.
+inline bool hasGlassSpheres(const Scene& scene) {
+  return std::any_of(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return isGlass(s); });
 }
+inline bool hasGlassBoxes(const Scene& scene) {
+  return std::any_of(scene.boxes.begin(), scene.boxes.end(), [](const Box& b) { return isGlass(b); });
+}
+inline bool hasGlass(const Scene& scene) { return hasGlassSpheres(scene) || hasGlassBoxes(scene); }
 
 // Throws with the field and the bound on the first impossible value.
 void validateScene(const Scene& scene);
