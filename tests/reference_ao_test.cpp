@@ -251,6 +251,26 @@ TEST(ReferenceAo, SphereAboveThePointHidesItsConeExactly) {
   printErrors("sphere over the ground", worst);
 }
 
+// Glass is no occluder: it is drawn after the SSAO, which does not see it, and
+// it lets the sky's light through. A glass sphere and a glass box over ground
+// points leave them open (AO exactly 1); the same shapes opaque hide at least
+// the sphere's cone (sin^2 alpha = 0.25) and the box's (more).
+TEST(ReferenceAo, GlassOccludesNothing) {
+  const glm::vec3 underSphere(2.0f, 0.0f, 2.0f), underBox(-2.0f, 0.0f, -2.0f);
+  SurfaceImage image;
+  image.addRow(underSphere, {0.0f, 1.0f, 0.0f});
+  image.addRow(underBox, {0.0f, 1.0f, 0.0f});
+  scene::Scene s = openGround();
+  s.spheres.push_back({.center = underSphere + glm::vec3(0.0f, 0.3f, 0.0f), .radius = 0.15f});
+  s.boxes.push_back({.center = underBox + glm::vec3(0.0f, 0.2f, 0.0f), .size = glm::vec3(0.3f)});
+  const std::vector<float> opaque = traceAo(s, image);
+  EXPECT_LT(rowMean(opaque, 0), 1.0 - 0.25 + meanBound(kRays, kPixelsPerCase));
+  EXPECT_LT(rowMean(opaque, 1), 1.0 - 0.25);
+  s.spheres[0].material = "glass";
+  s.boxes[0].material = "glass";
+  for (const float value : traceAo(s, image)) EXPECT_EQ(value, 1.0f);
+}
+
 TEST(ReferenceAo, BadInputsThrow) {
   const scene::Scene s = openGround();
   SurfaceImage image;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "reference/pixel_rotation.hpp"
 #include "reference/reference_scene.hpp"
@@ -19,15 +20,19 @@ namespace {
 // hit the triangle it leaves, and far below any feature, so it misses nothing.
 constexpr float kSurfaceOffset = 1e-4f;
 
-// The occluders of a frame: its triangles less the water (transparent, and not
-// an occluder for SSAO either) and the spheres' tessellations (cast exactly).
+// The occluders of a frame: its triangles less the water and the glass
+// (transparent, and drawn after the SSAO, which does not see them) and the
+// spheres' tessellations (cast exactly).
 ReferenceScene occluders(const scene::Scene& scene, const sim::WaterState* water, float time, bool exactSpheres) {
+  scene::Scene solid = scene;
+  std::erase_if(solid.spheres, [](const scene::Sphere& s) { return scene::isGlass(s); });
+  std::erase_if(solid.boxes, [](const scene::Box& b) { return scene::isGlass(b); });
   std::vector<scene::Mesh> opaque;
-  for (auto& mesh : sceneMeshes(scene, water, time)) {
+  for (auto& mesh : sceneMeshes(solid, water, time)) {
     if (mesh.name == "water" || (exactSpheres && mesh.name.rfind("sphere", 0) == 0)) continue;
     opaque.push_back(std::move(mesh));
   }
-  return ReferenceScene(opaque, exactSpheres ? scene::sceneAt(scene, time).spheres : std::vector<scene::Sphere>{});
+  return ReferenceScene(opaque, exactSpheres ? scene::sceneAt(solid, time).spheres : std::vector<scene::Sphere>{});
 }
 
 // A right-handed orthonormal basis (t, b, n) about the unit normal n, valid for

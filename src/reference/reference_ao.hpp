@@ -30,7 +30,7 @@ struct ReferenceAoOptions {
 
 // Ambient occlusion of each pixel's surface, ray traced on the CPU with Embree
 // against the frame's opaque geometry: every triangle mesh sceneMeshes returns
-// except the water surface, and the spheres cast exactly, as ReferenceScene
+// except the water surface and glass spheres and boxes, and the spheres cast exactly, as ReferenceScene
 // does (or tessellated, ReferenceAoOptions::exactSpheres). Per pixel, AO = 1 - (rays that hit something within
 // `radius`) / rays, the rays cosine-weighted about the normal; 1 where the pixel has no surface. `position` and
 // `normal` are RGBA float images (width * height * 4, rows top first) of world position and world normal, as the
