@@ -61,7 +61,9 @@ GlassExit glassSphereExit(vec3 n, vec3 view) {
   // No back face found at all (a sliver at the silhouette): straight through.
   const vec3 leaving =
       dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), params.glass.x) : inside;
-  return GlassExit(entry.reflectance, entry.reflected, worldPosition + 0.5 * (before + after) * inside, leaving);
+  const float chord = 0.5 * (before + after);
+  return GlassExit(entry.reflectance, entry.reflected, worldPosition + chord * inside, leaving, inside, chord, inside,
+                   exitNormal);
 }
 #endif
 
@@ -75,11 +77,8 @@ struct GlassRay {
   vec3 weight;           // its share of the pixel
   bool water;            // it starts in the pool's water
   uint skip;             // the glass sphere it leaves (castObjects)
-  RayDifferential diff;  // its pixel's footprint, carried from the glass through the flat water
+  RayDifferential diff;  // its pixel's footprint, carried from the glass through the flat water and other glass
 };
-// Rays split off at other glass: their footprint through a second lens is
-// not followed, and what they meet is sampled at a point.
-const RayDifferential kNoFootprint = RayDifferential(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
 
 void main() {
   const vec3 n = normalize(worldNormal);
@@ -136,9 +135,12 @@ void main() {
         continue;
       }
       const vec3 exit = g.exitPoint;
+      const GlassDifferentials footprints =
+          glassDifferentials(object, g, ray.dir, transferredDifferential(ray.diff, ray.dir, distance, object.normal));
+      rays[count++] = GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere,
+                               footprints.leaving);
       rays[count++] =
-          GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere, kNoFootprint);
-      rays[count++] = GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere, kNoFootprint);
+          GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere, footprints.reflected);
       continue;
     }
     if (!onObject && (up > 0.0 || airMet.met == kMetWater)) {
@@ -172,7 +174,7 @@ void main() {
     const vec2 footprint = hitFootprint(ray.diff, ray.dir, distance, surfaceNormal);
     vec3 seen;
     if (onObject) {
-      seen = objectSeen(object, met, ray.dir, sunShare);
+      seen = objectSeen(object, met, ray.dir, sunShare, kNoFootprint);  // opaque: glass is followed above
     } else if (ray.water) {
       seen = poolSurfaceSeen(poolMet, ray.dir, footprint, sunShare);
     } else {

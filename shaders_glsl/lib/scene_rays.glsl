@@ -149,9 +149,28 @@ GlassExit glassObjectExit(ObjectHit object, vec3 p, vec3 dir) {
     const uint box = min(object.box, uint(TP_MAX_BOXES - 1));
     return glassBoxPaths(p, dir, object.normal, objects.boxCenter[box], objects.boxHalfSize[box], object.glass);
   }
-  const GlassPaths g = glassSpherePaths(dir, object.normal, object.glass);
   const float radius = objects.spheres[min(object.sphere, uint(TP_MAX_SPHERES - 1))].w;
-  return GlassExit(g.reflectance, g.reflected, p + g.chord * radius * g.inside, g.leaving);
+  return glassSphereExactExit(p, dir, object.normal, radius, object.glass);
+}
+
+// The footprints of the two rays glass met along `dir` sends on
+// (glassPathDifferentials), rd the ray's differential carried to the entry.
+GlassDifferentials glassDifferentials(ObjectHit object, GlassExit g, vec3 dir, RayDifferential rd) {
+  const bool box = object.box != kSkipNoSphere;
+  const float yaw = box ? objects.boxCenter[min(object.box, uint(TP_MAX_BOXES - 1))].w : 0.0;
+  const float curvature = box ? 0.0 : 1.0 / objects.spheres[min(object.sphere, uint(TP_MAX_SPHERES - 1))].w;
+  return glassPathDifferentials(g, dir, object.normal, object.glass, curvature, yaw, rd);
+}
+
+// The footprint of the pixel where its ray, origin + s dir, meets a surface
+// with normal n, each differential carried along the ray to the surface's
+// tangent plane: in xz on the floor and the ground, along the wall and down
+// it on a wall (shared/pool.h's poolWallCoordinates).
+vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
+  const RayDifferential at = transferredDifferential(rd, dir, s, n);
+  const vec3 spread = abs(at.originX) + abs(at.originY);
+  if (abs(n.y) > 0.5) return spread.xz;
+  return vec2(abs(n.x) > 0.5 ? spread.z : spread.x, spread.y);
 }
 
 #ifdef TP_GLASS
@@ -164,8 +183,10 @@ GlassExit glassObjectExit(ObjectHit object, vec3 p, vec3 dir) {
 // scattered light. At the flat water the ray into the air looks up the
 // sky; from below, the reflection is left out unless the surface reflects
 // it all. Measured: the brick walls' code alone took the default-size
-// water pass from 178 to 215 ms.
-vec3 backdrop(vec3 p, vec3 r) {
+// water pass from 178 to 215 ms. rd, the ray's differential at p, is
+// carried through the flat water to the floor or the ground, whose
+// pattern it filters.
+vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
   vec3 sum = vec3(0.0), weight = vec3(1.0);
   // What the ray ends on, shaded once below: the ground, a wall, the floor, or the sky.
   AirHit end = AirHit(1e30, kMetNothing, vec3(0.0, 1.0, 0.0));
@@ -176,6 +197,9 @@ vec3 backdrop(vec3 p, vec3 r) {
       const FlatWaterSplit split = flatWaterSplit(r, false);
       sum = split.reflectance * sky(split.reflected);
       weight = vec3(1.0 - split.reflectance);
+      const vec3 up = vec3(0.0, 1.0, 0.0);
+      rd = refractedDifferential(transferredDifferential(rd, r, end.distance, up), r, split.refracted, up,
+                                 1.0 / pool.water.y);
       p += end.distance * r;
       r = split.refracted;
       water = true;
@@ -189,6 +213,7 @@ vec3 backdrop(vec3 p, vec3 r) {
       water = false;
     } else if (up > 0.0) {  // reflected whole
       weight = exp(-pool.extinction.rgb * up);
+      rd = reflectedDifferential(transferredDifferential(rd, r, up, vec3(0.0, -1.0, 0.0)), vec3(0.0, -1.0, 0.0));
       p += up * r;
       r = split.reflected;
     }
@@ -204,37 +229,43 @@ vec3 backdrop(vec3 p, vec3 r) {
     travel = end.distance;
   }
   const vec3 q = p + end.distance * r;
+  // The floor and the ground are level.
+  const vec2 footprint = hitFootprint(rd, r, end.distance, vec3(0.0, 1.0, 0.0));
   vec3 seen;
   if (end.met == kMetNothing) {
     seen = sky(r);
   } else if (end.met == kMetWall) {
     seen = lambertRadiance(frame, poolWallMeanAlbedo(pool), end.normal, 1.0);
   } else if (water) {
-    seen = poolFloorRadiance(pool, frame, q, end.normal, vec2(0.0), 1.0);
+    seen = poolFloorRadiance(pool, frame, q, end.normal, footprint, 1.0);
   } else {
-    seen = groundRadiance(pool.ground, frame, q.xz, vec2(0.0), end.normal, 1.0);
+    seen = groundRadiance(pool.ground, frame, q.xz, footprint, end.normal, 1.0);
   }
   return sum + weight * seen * exp(-pool.extinction.rgb * travel);
 }
 
 // A glass sphere or box met at p along `dir`: the backdrop along its two
-// exact paths, one after the other.
-vec3 glassSeen(ObjectHit object, vec3 p, vec3 dir) {
+// exact paths, one after the other, each with its footprint (rd: the ray's
+// differential carried to p).
+vec3 glassSeen(ObjectHit object, vec3 p, vec3 dir, RayDifferential rd) {
   const GlassExit g = glassObjectExit(object, p, dir);
+  const GlassDifferentials footprints = glassDifferentials(object, g, dir, rd);
   vec3 sum = vec3(0.0);
   TP_DONT_UNROLL for (int k = 0; k < 2; ++k) {
     const vec3 from = k == 0 ? g.exitPoint : p, along = k == 0 ? g.leaving : g.reflected;
-    sum += (k == 0 ? 1.0 - g.reflectance : g.reflectance) * backdrop(from, along);
+    sum += (k == 0 ? 1.0 - g.reflectance : g.reflectance) *
+           backdrop(from, along, k == 0 ? footprints.leaving : footprints.reflected);
   }
   return sum;
 }
 #endif
 
-// An object met at p along `dir`, at `sunShare` of the sun. The variants
-// for scenes without glass (TP_GLASS undefined) meet none.
-vec3 objectSeen(ObjectHit object, vec3 p, vec3 dir, float sunShare) {
+// An object met at p along `dir`, at `sunShare` of the sun; rd, the ray's
+// differential carried to p, filters what glass shows. The variants for
+// scenes without glass (TP_GLASS undefined) meet none.
+vec3 objectSeen(ObjectHit object, vec3 p, vec3 dir, float sunShare, RayDifferential rd) {
 #ifdef TP_GLASS
-  if (object.glass > 0.0) return glassSeen(object, p, dir);
+  if (object.glass > 0.0) return glassSeen(object, p, dir, rd);
 #endif
   return glossyRadiance(glossyMap, lambertRadiance(frame, object.albedo, object.normal, sunShare), dir, object.normal,
                         object.material);
@@ -252,23 +283,12 @@ vec3 radianceAbove(vec3 p, vec3 r) {
   // One sun share for what is met (the shader holds its code once).
   const float distance = object.distance > 0.0 ? object.distance : sWall;
   const float sunShare = frameSunShare(p + distance * r);
-  if (object.distance > 0.0) return objectSeen(object, p + distance * r, r, sunShare);
+  if (object.distance > 0.0) return objectSeen(object, p + distance * r, r, sunShare, kNoFootprint);
   // The wall's bricks point-sampled, as the reference tracer does: derivatives
   // are not to be had in this divergent branch.
   const vec3 wallNormal = poolWallNormal(walls, r);
   return glossyRadiance(glossyMap, poolWallRadiance(pool, frame, p + sWall * r, wallNormal, vec2(0.0), sunShare), r,
                         wallNormal, pool.wallGloss.xy);
-}
-
-// The footprint of the pixel where its ray, origin + s dir, meets a surface
-// with normal n, each differential carried along the ray to the surface's
-// tangent plane: in xz on the floor and the ground, along the wall and down
-// it on a wall (shared/pool.h's poolWallCoordinates).
-vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
-  const RayDifferential at = transferredDifferential(rd, dir, s, n);
-  const vec3 spread = abs(at.originX) + abs(at.originY);
-  if (abs(n.y) > 0.5) return spread.xz;
-  return vec2(abs(n.x) > 0.5 ? spread.z : spread.x, spread.y);
 }
 
 // What a ray leaving p under the water along t sees: the pool (walls, and the
@@ -282,7 +302,8 @@ vec3 radianceBelow(vec3 p, vec3 t, RayDifferential rd) {
   const vec3 met = p + distance * t;
   const float sunShare = sunUnderWater(met);
   const vec3 radiance = object.distance > 0.0
-                            ? objectSeen(object, met, t, sunShare)
+                            ? objectSeen(object, met, t, sunShare,
+                                         transferredDifferential(rd, t, distance, object.normal))
                             : poolSurfaceSeen(hit, t, hitFootprint(rd, t, hit.distance, hit.normal), sunShare);
   return radiance * exp(-pool.extinction.rgb * distance) + inScatter(p, t, distance);
 }

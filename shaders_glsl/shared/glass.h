@@ -104,7 +104,29 @@ struct GlassExit {
   vec3 reflected;     // from the entry point
   vec3 exitPoint;
   vec3 leaving;
+  // The path inside, which the raster's ray differentials follow
+  // (glassDifferentials, lib/scene_rays.glsl):
+  vec3 inside;         // the refracted direction at the entry point
+  float insideLength;  // the path's length, its legs between reflections summed
+  vec3 lastInside;     // the direction of its last leg
+  vec3 exitNormal;     // the outward normal where that leg ends
 };
+
+// A sphere's exact paths (glassSpherePaths) from p on it, outward normal n:
+// the exit at the chord's far end.
+TP_INLINE GlassExit glassSphereExactExit(vec3 p, vec3 dir, vec3 n, float radius, float ior) {
+  GlassPaths paths = glassSpherePaths(dir, n, ior);
+  GlassExit g;
+  g.reflectance = paths.reflectance;
+  g.reflected = paths.reflected;
+  g.insideLength = paths.chord * radius;
+  g.exitPoint = p + g.insideLength * paths.inside;
+  g.leaving = paths.leaving;
+  g.inside = paths.inside;
+  g.lastInside = paths.inside;
+  g.exitNormal = n + paths.chord * paths.inside;
+  return g;
+}
 
 // The most reflections inside a glass box before the ray is taken as leaving
 // (by the internally reflected direction, as a sphere's does). A box's faces
@@ -126,8 +148,10 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
   // In the box's frame, from p held inside it (round-off may put it out).
   vec3 h = vec3(halfSize);
   vec3 o = clamp(toBoxFrame(p - vec3(center), center.w), -h, h);
-  vec3 d = toBoxFrame(refract(dir, n, 1.0f / ior), center.w);  // from air into glass: always refracts
+  g.inside = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
+  vec3 d = toBoxFrame(g.inside, center.w);
   vec3 nOut = vec3(0.0f);
+  g.insideLength = 0.0f;
   TP_DONT_UNROLL for (int k = 0; k <= TP_GLASS_BOX_REFLECTIONS; ++k) {
     // The nearest of the three faces the ray heads for.
     float s = 1e30f;
@@ -140,6 +164,7 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
       }
     }
     o = clamp(o + s * d, -h, h);
+    g.insideLength += s;
     nOut = vec3(0.0f);
     nOut[axis] = d[axis] > 0.0f ? 1.0f : -1.0f;
     if (k == TP_GLASS_BOX_REFLECTIONS || !glassTotalInternalReflection(d, nOut, ior)) break;
@@ -147,6 +172,8 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
   }
   g.exitPoint = vec3(center) + fromBoxFrame(o, center.w);
   g.leaving = fromBoxFrame(glassExitDirection(d, nOut, ior), center.w);
+  g.lastInside = fromBoxFrame(d, center.w);
+  g.exitNormal = fromBoxFrame(nOut, center.w);
   return g;
 }
 

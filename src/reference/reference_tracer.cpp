@@ -336,13 +336,12 @@ class Tracer {
                           SurfacePoint* first) const {
     const glm::vec3 n = glm::normalize(p - glass.center);
     if (first) *first = {p, n};
-    const shader::GlassPaths g = shader::glassSpherePaths(dir, n, glass.ior);
+    const shader::GlassExit g = shader::glassSphereExactExit(p, dir, n, glass.radius, glass.ior);
     if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr, &glass);
     };
-    const glm::vec3 exit = p + g.chord * glass.radius * g.inside;
-    return glm::mix(follow(exit, g.leaving), follow(p, g.reflected), g.reflectance);
+    return glm::mix(follow(g.exitPoint, g.leaving), follow(p, g.reflected), g.reflectance);
   }
 
   // The same for glass box `b`, met at p on the face of outward normal n:
