@@ -83,21 +83,30 @@ struct GlassRay {
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
+  // The view ray's footprint, taken here where every lane of the quad runs
+  // (the view ray and the point on the face are smooth across the quad).
+  const RayDifferential viewFootprint = rayDifferential(worldPosition, view);
 #ifdef TP_GLASS_BOX
   const GlassExit entry = glassBoxPaths(worldPosition, view, n, params.center, params.halfSize, params.glass.x);
   const uint self = kSkipNoSphere;
+  const GlassDifferentials footprints =
+      glassPathDifferentials(entry, view, n, params.glass.x, 0.0, params.center.w, viewFootprint);
 #else
   const GlassExit entry = glassSphereExit(n, view);
   const uint self = params.search.y;
+  // The footprints along the exact paths: the search's exit point and normal
+  // jump from texel to texel, and across the silhouette's quads.
+  const GlassDifferentials footprints =
+      glassPathDifferentials(glassSphereExactExit(worldPosition, view, n, params.sphere.w, params.glass.x), view, n,
+                             params.glass.x, 1.0 / params.sphere.w, 0.0, viewFootprint);
 #endif
   const float reflectance = entry.reflectance;
   const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
-  // The two rays' footprints, taken here where every lane of the quad runs.
   GlassRay rays[kGlassRays];
-  rays[0] = GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self,
-                     rayDifferential(exitPoint, leaving));
-  rays[1] = GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self,
-                     rayDifferential(worldPosition, reflected));
+  rays[0] =
+      GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self, footprints.leaving);
+  rays[1] =
+      GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self, footprints.reflected);
   int count = 2;
   vec3 radiance = vec3(0.0);
   TP_DONT_UNROLL for (int k = 0; k < kGlassRays; ++k) {
@@ -165,7 +174,7 @@ void main() {
       continue;
     }
     if (!onObject && !ray.water && airMet.met == kMetNothing) {
-      radiance += weight * sky(ray.dir);
+      radiance += weight * skyFiltered(ray.dir, ray.diff);
       continue;
     }
     // An opaque surface: one sun share and one footprint for whichever.

@@ -15,6 +15,8 @@ layout(binding = 1) uniform sampler2D skyTexture;
 void main() {
   vec4 far = frame.inverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 dir = normalize(far.xyz / far.w - frame.cameraPosition.xyz);
-  color = vec4(texture(skyTexture, directionToEquirect(dir)).rgb, 1.0);
+  // Level 0: the implicit level would jump to the coarsest where u wraps
+  // round (its derivative there spans the texture).
+  color = vec4(textureLod(skyTexture, directionToEquirect(dir), 0.0).rgb, 1.0);
   writeNoSurface();
 }

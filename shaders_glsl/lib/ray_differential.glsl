@@ -5,6 +5,7 @@
 // Reads the includer's `frame` in place.
 #ifndef TP_LIB_RAY_DIFFERENTIAL
 #define TP_LIB_RAY_DIFFERENTIAL
+#include "shared/constants.h"
 #include "shared/glass.h"
 
 struct RayDifferential {
@@ -73,6 +74,9 @@ struct GlassDifferentials {
 // v mirrored by `flips` of its components in the frame of a box of yaw `yaw`.
 vec3 mirroredInBox(vec3 v, vec3 flips, float yaw) { return fromBoxFrame(flips * toBoxFrame(v, yaw), yaw); }
 
+// v shortened to `most` where it is longer.
+vec3 atMost(vec3 v, float most) { return v * min(1.0, most / max(length(v), 1e-30)); }
+
 GlassDifferentials glassPathDifferentials(GlassExit g, vec3 dir, vec3 n, float ior, float curvature, float yaw,
                                           RayDifferential rd) {
   GlassDifferentials result;
@@ -93,6 +97,15 @@ GlassDifferentials glassPathDifferentials(GlassExit g, vec3 dir, vec3 n, float i
   result.leaving = dot(refracted, refracted) > 0.0
                        ? refractedDifferential(atExit, g.lastInside, g.leaving, m, dmX, dmY, ior)
                        : reflectedDifferential(atExit, g.lastInside, m, dmX, dmY);
+  if (curvature > 0.0) {
+    // A sphere turns a ray by at most its rim's deviation, 2 (pi/2 - asin(1 / ior)):
+    // a pixel's rays leave it at most that much wider than they came. Near
+    // the silhouette the linear model overshoots it by far (the turn's
+    // slope grows without bound where the turn itself stays small).
+    const float turn = 2.0 * (0.5 * kPi - asin(1.0 / ior));
+    result.leaving.directionX = atMost(result.leaving.directionX, length(rd.directionX) + turn);
+    result.leaving.directionY = atMost(result.leaving.directionY, length(rd.directionY) + turn);
+  }
   return result;
 }
 

@@ -1,14 +1,17 @@
 #include "render/sky.hpp"
 
+#include "gpu/barriers.hpp"
 #include "gpu/commands.hpp"
+#include "gpu/submit.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/sky_image.hpp"
 
 namespace tp::render {
 
 Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer)
-    // At the far plane, tested against the surfaces' depth and not writing it.
-    : background_(gpu::createGraphicsPipeline(
+    : mips_(ctx),
+      // At the far plane, tested against the surfaces' depth and not writing it.
+      background_(gpu::createGraphicsPipeline(
           ctx,
           {.vertexShader = "fullscreen.vert",
            .fragmentShader = gbuffer ? "sky_background.frag" : "sky_background.color_only.frag",
@@ -17,28 +20,58 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
            .depthTest = true})) {
   if (!scene.sky.image.empty()) {
     const SkyImage image = loadSkyImage(scene.sky);
-    image_ = uploadSkyImage(ctx, image);
+    image_ = uploadSkyImage(ctx, image, "sky image texture", skyMipLevels({image.width, image.height}));
+    fillMips(ctx);
     light_ = skyImageLight(image);
     ref_ = graph.image("sky", image_, vk::ImageLayout::eShaderReadOnlyOptimal);
     return;
   }
-  image_ = gpu::createImage2D(ctx, {scene.sky.textureWidth, scene.sky.textureWidth / 2}, kSkyFormat,
-                              vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled, "sky texture");
+  const vk::Extent2D extent{scene.sky.textureWidth, scene.sky.textureWidth / 2};
+  image_ =
+      gpu::createImage2D(ctx, extent, kSkyFormat, vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled,
+                         "sky texture", skyMipLevels(extent));
   light_ = proceduralSkyLight(scene.sky);
   ref_ = graph.image("sky", image_);
   params_ = skyParams(scene.sky);
   skyPipeline_ = gpu::createComputePipeline(ctx, "sky.comp", sizeof(shader::SkyParams));
 }
 
+void Sky::fillMips(const gpu::Context& ctx) {
+  gpu::DescriptorArena descriptors(ctx);
+  gpu::submitAndWait(
+      ctx,
+      [&](const vk::raii::CommandBuffer& cmd) {
+        // Chained to the upload's barrier, whose second scope was the fragment stage.
+        auto toGeneral = gpu::imageBarrier(
+            image_.handle(), image_.aspect, {vk::PipelineStageFlagBits2::eFragmentShader, vk::AccessFlagBits2::eNone},
+            vk::ImageLayout::eShaderReadOnlyOptimal,
+            {vk::PipelineStageFlagBits2::eComputeShader,
+             vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eShaderStorageWrite},
+            vk::ImageLayout::eGeneral);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toGeneral, 1));
+        mips_.record(cmd, descriptors, image_);
+        // Later submissions come later in submission order: this covers their reads.
+        auto toShader =
+            gpu::imageBarrier(image_.handle(), image_.aspect, gpu::access::computeWrite, vk::ImageLayout::eGeneral,
+                              {vk::PipelineStageFlagBits2::eFragmentShader | vk::PipelineStageFlagBits2::eComputeShader,
+                               vk::AccessFlagBits2::eShaderSampledRead},
+                              vk::ImageLayout::eShaderReadOnlyOptimal);
+        gpu::pipelineBarrier(cmd, {}, std::span(&toShader, 1));
+      },
+      "sky image mips");
+}
+
 void Sky::declareSky(FrameGraph& graph) const {
   if (!skyPipeline_) return;
+  // The pass binds its own sets: level 0, then level by level (SkyMips).
   graph.pass(passes::kSky,
              [this](PassBuilder& pass) {
-               Bindings& set = pass.bindings().storageImage(0, ref_, Use::ComputeWrite);
-               return [this, &set](PassContext& pc) {
+               const gpu::Image& sky = pass.attach(ref_, Use::ComputeWrite);
+               return [this, &sky](PassContext& pc) {
                  gpu::bindPipeline(pc.cmd, *skyPipeline_, params_);
-                 set.bind(pc.cmd, *skyPipeline_, pc.descriptors);
+                 gpu::DescriptorWrites().storageImageLevel(0, sky, 0).bind(pc.cmd, *skyPipeline_, pc.descriptors);
                  gpu::dispatchCovering(pc.cmd, *skyPipeline_, params_.counts.x, params_.counts.x / 2);
+                 mips_.record(pc.cmd, pc.descriptors, sky);
                };
              },
              {.cached = true, .runIf = {}});

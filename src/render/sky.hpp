@@ -1,11 +1,12 @@
 #pragma once
 // The sky: the procedural one, filled by a compute pass on the first frame
 // (cached: its parameters are fixed), or an image, uploaded once (then no
-// pass at all); and the background that shows it behind everything, drawn
-// in the ground's pass.
+// pass at all), each with its mip chain (SkyMips); and the background that
+// shows it behind everything, drawn in the ground's pass.
 #include <functional>
 #include <optional>
 
+#include "render/sky_mips.hpp"
 #include "render/surfaces.hpp"
 #include "scene/scene.hpp"
 #include "shading/sky_model.hpp"
@@ -31,6 +32,10 @@ class Sky {
   std::function<void(PassContext&)> background(PassBuilder& pass, const FrameInputs& in) const;
 
  private:
+  // A sky image's levels past the first, once, as it is loaded.
+  void fillMips(const gpu::Context& ctx);
+
+  SkyMips mips_;
   gpu::Image image_;
   GraphImage ref_;
   SkyLight light_;

@@ -87,15 +87,17 @@ SkyImage proceduralSkyImage(const scene::Sky& sky, uint32_t width) {
   return image;
 }
 
-gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name) {
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name, uint32_t mipLevels) {
   // Half floats: linear filtering of them is required of every device.
   std::vector<uint16_t> halves(image.texels.size() * 4);
   for (size_t k = 0; k < image.texels.size(); ++k) {
     for (int c = 0; c < 4; ++c) halves[4 * k + c] = glm::packHalf1x16(std::min(image.texels[k][c], 65504.0f));
   }
+  // Its other levels are written by a compute shader (render/sky_mips).
+  const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst |
+                                    (mipLevels > 1 ? vk::ImageUsageFlagBits::eStorage : vk::ImageUsageFlags{});
   gpu::Image texture =
-      gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat,
-                         vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst, name);
+      gpu::createImage2D(ctx, {image.width, image.height}, vk::Format::eR16G16B16A16Sfloat, usage, name, mipLevels);
   gpu::Buffer staging = gpu::createBuffer(ctx, halves.size() * sizeof(uint16_t), vk::BufferUsageFlagBits::eTransferSrc,
                                           gpu::MemoryUse::Upload, "sky image staging");
   std::memcpy(staging.mapped, halves.data(), halves.size() * sizeof(uint16_t));

@@ -39,7 +39,9 @@ glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d);
 // `width` x width / 2 texels at their centres, as the half floats it holds.
 SkyImage proceduralSkyImage(const scene::Sky& sky, uint32_t width);
 
-// A half-float sampled texture holding the image, left in the shader-read layout.
-gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name = "sky image texture");
+// A half-float sampled texture holding the image in its level 0 (the other
+// `mipLevels` are the caller's to fill), left in the shader-read layout.
+gpu::Image uploadSkyImage(const gpu::Context& ctx, const SkyImage& image, const char* name = "sky image texture",
+                          uint32_t mipLevels = 1);
 
 }  // namespace tp::render
