@@ -105,7 +105,7 @@ struct GlassExit {
   vec3 exitPoint;
   vec3 leaving;
   // The path inside, which the raster's ray differentials follow
-  // (glassDifferentials, lib/scene_rays.glsl):
+  // (glassPathDifferentials, lib/ray_differential.glsl):
   vec3 inside;         // the refracted direction at the entry point
   float insideLength;  // the path's length, its legs between reflections summed
   vec3 lastInside;     // the direction of its last leg
