@@ -38,11 +38,11 @@ bool beforeBackFace(vec3 p, out vec3 backNormal) {
   return back.w > 0.0 && -(frame.view * vec4(p, 1.0)).z < back.w;
 }
 
-// The sphere's paths, the exit searched for in image space (the exact
-// chord's end and its ray go unused).
-GlassExit glassSphereExit(vec3 n, vec3 view) {
-  const GlassPaths entry = glassSpherePaths(view, n, params.glass.x);
-  const vec3 inside = entry.inside;
+// The sphere's exact paths with the exit searched for in image space: the
+// front surface's reflection and refraction are the exact ones, the exit
+// point, its normal and the ray that leaves are the search's.
+GlassExit searchedExit(GlassExit exact) {
+  const vec3 inside = exact.inside;
   // The exit lies within the longest chord of the sphere, its diameter. The
   // entry point itself is before the back face behind it.
   float before = 0.0, after = 2.0 * params.sphere.w;
@@ -58,12 +58,14 @@ GlassExit glassSphereExit(vec3 n, vec3 view) {
       after = mid;
     }
   }
+  GlassExit g = exact;
+  g.insideLength = 0.5 * (before + after);
+  g.exitPoint = worldPosition + g.insideLength * inside;
+  g.exitNormal = exitNormal;
   // No back face found at all (a sliver at the silhouette): straight through.
-  const vec3 leaving =
+  g.leaving =
       dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), params.glass.x) : inside;
-  const float chord = 0.5 * (before + after);
-  return GlassExit(entry.reflectance, entry.reflected, worldPosition + chord * inside, leaving, inside, chord, inside,
-                   exitNormal);
+  return g;
 }
 #endif
 
@@ -92,13 +94,13 @@ void main() {
   const GlassDifferentials footprints =
       glassPathDifferentials(entry, view, n, params.glass.x, 0.0, params.center.w, viewFootprint);
 #else
-  const GlassExit entry = glassSphereExit(n, view);
+  const GlassExit exact = glassSphereExactExit(worldPosition, view, n, params.sphere.w, params.glass.x);
+  const GlassExit entry = searchedExit(exact);
   const uint self = params.search.y;
   // The footprints along the exact paths: the search's exit point and normal
   // jump from texel to texel, and across the silhouette's quads.
   const GlassDifferentials footprints =
-      glassPathDifferentials(glassSphereExactExit(worldPosition, view, n, params.sphere.w, params.glass.x), view, n,
-                             params.glass.x, 1.0 / params.sphere.w, 0.0, viewFootprint);
+      glassPathDifferentials(exact, view, n, params.glass.x, 1.0 / params.sphere.w, 0.0, viewFootprint);
 #endif
   const float reflectance = entry.reflectance;
   const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
