@@ -62,9 +62,9 @@ GlassExit searchedExit(GlassExit exact) {
   g.insideLength = 0.5 * (before + after);
   g.exitPoint = worldPosition + g.insideLength * inside;
   g.exitNormal = exitNormal;
+  g.exitIor = params.glass.x / surroundIndexAt(glassSurround(), g.exitPoint);
   // No back face found at all (a sliver at the silhouette): straight through.
-  g.leaving =
-      dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), params.glass.x) : inside;
+  g.leaving = dot(exitNormal, exitNormal) > 0.0 ? glassExitDirection(inside, normalize(exitNormal), g.exitIor) : inside;
   return g;
 }
 #endif
@@ -85,22 +85,27 @@ struct GlassRay {
 void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
+  // The view ray is in the camera's medium: the water pass draws over the
+  // glass the camera sees across the water's surface.
+  const bool cameraInWater = medium.extinction.w > 0.0;
   // The view ray's footprint, taken here where every lane of the quad runs
   // (the view ray and the point on the face are smooth across the quad).
   const RayDifferential viewFootprint = rayDifferential(worldPosition, view);
 #ifdef TP_GLASS_BOX
-  const GlassExit entry = glassBoxPaths(worldPosition, view, n, params.center, params.halfSize, params.glass.x);
+  const GlassExit entry = glassBoxPaths(worldPosition, view, n, params.center, params.halfSize, params.glass.x,
+                                        mediumIndex(cameraInWater), glassSurround());
   const uint self = kSkipNoSphere;
   const GlassDifferentials footprints =
-      glassPathDifferentials(entry, view, n, params.glass.x, 0.0, params.center.w, viewFootprint);
+      glassPathDifferentials(entry, view, n, 0.0, params.center.w, viewFootprint);
 #else
-  const GlassExit exact = glassSphereExactExit(worldPosition, view, n, params.sphere.w, params.glass.x);
+  const GlassExit exact = glassSphereExactExit(worldPosition, view, n, params.sphere.w, params.glass.x,
+                                               mediumIndex(cameraInWater), glassSurround());
   const GlassExit entry = searchedExit(exact);
   const uint self = params.search.y;
   // The footprints along the exact paths: the search's exit point and normal
   // jump from texel to texel, and across the silhouette's quads.
   const GlassDifferentials footprints =
-      glassPathDifferentials(exact, view, n, params.glass.x, 1.0 / params.sphere.w, 0.0, viewFootprint);
+      glassPathDifferentials(exact, view, n, 1.0 / params.sphere.w, 0.0, viewFootprint);
 #endif
   const float reflectance = entry.reflectance;
   const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
@@ -140,7 +145,7 @@ void main() {
     const bool room = count + 2 <= kGlassRays;
     if (onObject && object.glass > 0.0) {
       // Other glass: its two exact paths.
-      const GlassExit g = glassObjectExit(object, met, ray.dir);
+      const GlassExit g = glassObjectExit(object, met, ray.dir, ray.water);
       if (!room) {
         radiance += weight * mix(sky(g.leaving), sky(g.reflected), g.reflectance);
         continue;
@@ -185,7 +190,7 @@ void main() {
     const vec2 footprint = hitFootprint(ray.diff, ray.dir, distance, surfaceNormal);
     vec3 seen;
     if (onObject) {
-      seen = objectSeen(object, met, ray.dir, sunShare, kNoFootprint);  // opaque: glass is followed above
+      seen = objectSeen(object, met, ray.dir, sunShare, kNoFootprint, ray.water);  // opaque: glass is followed above
     } else if (ray.water) {
       seen = poolSurfaceSeen(poolMet, ray.dir, footprint, sunShare);
     } else {

@@ -8,8 +8,10 @@
 
 layout(local_size_x = 64) in;
 struct GlassCase {
-  vec4 origin, direction;      // the ray (xyz; direction unit)
-  vec4 originX, directionX;    // its differential (xyz)
+  vec4 origin, direction;      // the ray (xyz; direction unit); origin.w: the index of its medium,
+                               // direction.w: the water's level round the glass
+  vec4 originX, directionX;    // its differential (xyz); originX.w: the water's index, directionX.w:
+                               // half the water's square (0: none)
   vec4 center;                 // xyz; w: a sphere's radius, a box's yaw
   vec4 box;                    // xyz: a box's half size (0 for a sphere); w: the index
 };
@@ -29,10 +31,11 @@ void main() {
   const float s = box ? boxHit.x : raySphere(o, d, c.center);
   const vec3 p = o + s * d;
   const vec3 n = box ? boxHit.yzw : (p - c.center.xyz) / c.center.w;
-  const GlassExit g = box ? glassBoxPaths(p, d, n, c.center, vec4(c.box.xyz, 0.0), ior)
-                          : glassSphereExactExit(p, d, n, c.center.w, ior);
+  const GlassSurround surround = GlassSurround(c.direction.w, c.directionX.w, c.originX.w);
+  const GlassExit g = box ? glassBoxPaths(p, d, n, c.center, vec4(c.box.xyz, 0.0), ior, c.origin.w, surround)
+                          : glassSphereExactExit(p, d, n, c.center.w, ior, c.origin.w, surround);
   const RayDifferential rd = RayDifferential(c.originX.xyz, vec3(0.0), c.directionX.xyz, vec3(0.0));
-  const GlassDifferentials f = glassPathDifferentials(g, d, n, ior, box ? 0.0 : 1.0 / c.center.w,
+  const GlassDifferentials f = glassPathDifferentials(g, d, n, box ? 0.0 : 1.0 / c.center.w,
                                                       box ? c.center.w : 0.0, transferredDifferential(rd, d, s, n));
   values[4 * i] = vec4(f.leaving.originX, 0.0);
   values[4 * i + 1] = vec4(f.leaving.directionX, 0.0);

@@ -13,6 +13,8 @@ namespace tp::test {
 namespace {
 
 constexpr float kIor = 1.5f;
+// No water anywhere round the glass.
+constexpr shader::GlassSurround kInAir{0.0f, 0.0f, 1.0f};
 
 // A ray at `degrees` from the vertical in the xy plane, going down.
 glm::vec3 downAt(float degrees) {
@@ -30,7 +32,7 @@ TEST(GlassBoxOptics, ASlabMovesTheRayAndKeepsItsDirection) {
   const glm::vec4 center(0.0f, 0.0f, 0.0f, 0.0f), half(10.0f, 0.1f, 10.0f, 0.0f);
   for (float degrees : {0.0f, 20.0f, 45.0f, 80.0f}) {
     const glm::vec3 dir = downAt(degrees), entry(0.0f, 0.1f, 0.0f);
-    const shader::GlassExit g = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor);
+    const shader::GlassExit g = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor, 1.0f, kInAir);
     const float i = glm::radians(degrees), r = std::asin(std::sin(i) / kIor);
     EXPECT_NEAR(glm::distance(g.leaving, dir), 0.0f, 1e-5f) << degrees;
     EXPECT_NEAR(g.exitPoint.y, -0.1f, 1e-6f) << degrees;
@@ -41,6 +43,34 @@ TEST(GlassBoxOptics, ASlabMovesTheRayAndKeepsItsDirection) {
     EXPECT_NEAR(moved, 0.2f * std::sin(i - r) / std::cos(r), 1e-5f) << degrees;
     EXPECT_NEAR(g.reflectance, shader::fresnelDielectric(std::cos(i), 1.0f, kIor), 1e-6f);
     EXPECT_NEAR(glm::distance(g.reflected, glm::vec3(dir.x, -dir.y, dir.z)), 0.0f, 1e-6f);
+  }
+}
+
+// Under the water each surface bends the ray by the glass's index over the
+// water's: in a slab wholly under the level the ray runs at sin r = n_w sin(i)
+// / n_g and leaves as it came, moved sideways by t sin(i - r) / cos(r). Across
+// the level, the top face in the air and the bottom in the water, parallel
+// faces leave it as if it had gone from the air straight into the water:
+// sin(out) = sin(i) / n_w, whatever the glass.
+TEST(GlassBoxOptics, ASlabInTheWaterBendsByTheRatioOfTheIndices) {
+  const float water = 1.333f;
+  const glm::vec4 center(0.0f, 0.0f, 0.0f, 0.0f), half(10.0f, 0.1f, 10.0f, 0.0f);
+  const shader::GlassSurround under{1.0f, 50.0f, water}, across{0.05f, 50.0f, water};
+  for (float degrees : {0.0f, 20.0f, 45.0f, 80.0f}) {
+    const glm::vec3 dir = downAt(degrees), entry(0.0f, 0.1f, 0.0f);
+    const float i = glm::radians(degrees), r = std::asin(water * std::sin(i) / kIor);
+    const shader::GlassExit g = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor, water, under);
+    EXPECT_NEAR(glm::distance(g.leaving, dir), 0.0f, 1e-5f) << degrees;
+    EXPECT_NEAR(g.exitPoint.x, 0.2f * std::tan(r), 1e-5f) << degrees;
+    const glm::vec3 straight = entry + (0.2f / std::cos(i)) * dir;
+    EXPECT_NEAR(glm::length(glm::cross(g.exitPoint - straight, dir)), 0.2f * std::sin(i - r) / std::cos(r), 1e-5f)
+        << degrees;
+    EXPECT_NEAR(g.reflectance, shader::fresnelDielectric(std::cos(i), water, kIor), 1e-6f) << degrees;
+
+    const shader::GlassExit a = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor, 1.0f, across);
+    EXPECT_NEAR(a.leaving.x, std::sin(i) / water, 1e-5f) << degrees;
+    EXPECT_LT(a.leaving.y, 0.0f);
+    EXPECT_NEAR(a.reflectance, shader::fresnelDielectric(std::cos(i), 1.0f, kIor), 1e-6f) << degrees;
   }
 }
 
@@ -56,7 +86,7 @@ TEST(GlassBoxOptics, ALightPipeReflectsOffItsSidesAndLeavesThroughTheBottom) {
   const glm::vec4 center(0.0f, 0.0f, 0.0f, 0.0f), half(w, 0.5f * height, w, 0.0f);
   for (float degrees : {10.0f, 30.0f, 60.0f, 85.0f}) {
     const glm::vec3 dir = downAt(degrees), entry(-0.05f, 0.5f * height, 0.0f);
-    const shader::GlassExit g = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor);
+    const shader::GlassExit g = shader::glassBoxPaths(entry, dir, {0.0f, 1.0f, 0.0f}, center, half, kIor, 1.0f, kInAir);
     const float r = std::asin(std::sin(glm::radians(degrees)) / kIor);
     const float unfolded = entry.x + height * std::tan(r);  // where the straight line meets the bottom
     // Folded into [-w, w]: each crossing of a side is one reflection.
@@ -78,9 +108,10 @@ TEST(GlassBoxOptics, ATurnedBoxTurnsItsPaths) {
   auto turned = [&](glm::vec3 v) { return v.x * ax + glm::vec3(0.0f, v.y, 0.0f) + v.z * az; };
   const glm::vec4 half(0.3f, 0.4f, 0.2f, 0.0f), at(1.0f, 2.0f, -1.0f, 0.0f);
   const glm::vec3 entry(0.3f, 0.1f, -0.05f), dir = glm::normalize(glm::vec3(-0.7f, -0.3f, 0.4f));
-  const shader::GlassExit plain = shader::glassBoxPaths(entry, dir, {1.0f, 0.0f, 0.0f}, glm::vec4(0.0f), half, kIor);
+  const shader::GlassExit plain =
+      shader::glassBoxPaths(entry, dir, {1.0f, 0.0f, 0.0f}, glm::vec4(0.0f), half, kIor, 1.0f, kInAir);
   const shader::GlassExit g = shader::glassBoxPaths(glm::vec3(at) + turned(entry), turned(dir), turned({1, 0, 0}),
-                                                    glm::vec4(glm::vec3(at), yaw), half, kIor);
+                                                    glm::vec4(glm::vec3(at), yaw), half, kIor, 1.0f, kInAir);
   EXPECT_NEAR(glm::distance(g.exitPoint, glm::vec3(at) + turned(plain.exitPoint)), 0.0f, 1e-5f);
   EXPECT_NEAR(glm::distance(g.leaving, turned(plain.leaving)), 0.0f, 1e-5f);
   EXPECT_NEAR(g.reflectance, plain.reflectance, 1e-6f);
@@ -107,7 +138,7 @@ TEST(GlassBoxOptics, EveryRayLeavesFromTheSurfaceOutwards) {
         dir[axis] = -cosI;
         dir[(axis + 1) % 3] = std::sqrt(1.0f - cosI * cosI) * std::cos(phi);
         dir[(axis + 2) % 3] = std::sqrt(1.0f - cosI * cosI) * std::sin(phi);
-        const shader::GlassExit g = shader::glassBoxPaths(entry, dir, n, glm::vec4(0.0f), half, ior);
+        const shader::GlassExit g = shader::glassBoxPaths(entry, dir, n, glm::vec4(0.0f), half, ior, 1.0f, kInAir);
         const glm::vec3 out = glm::abs(g.exitPoint) / glm::vec3(half);
         EXPECT_NEAR(std::max({out.x, out.y, out.z}), 1.0f, 1e-5f);
         EXPECT_NEAR(glm::length(g.leaving), 1.0f, 1e-5f);

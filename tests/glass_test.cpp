@@ -76,6 +76,44 @@ TEST(GlassOptics, ASphereNeverTotallyReflectsInside) {
   }
 }
 
+// Glass of the water's own index under the water is not there: no
+// reflection, and every ray goes straight through along its line. A sphere
+// under the water bends the ray by the glass's index over the water's: its
+// exit follows Snell's law with that ratio, and the ray leaves at the angle
+// to the exit normal it met the front at, as in the air.
+TEST(GlassOptics, UnderTheWaterTheGlassBendsByTheRatioOfTheIndices) {
+  const float water = 1.333f;
+  const shader::GlassSurround pool{0.0f, 10.0f, water};
+  const glm::vec3 centre(0.2f, -1.0f, 0.1f);
+  const float radius = 0.5f;
+  for (int k = 0; k < 200; ++k) {
+    // Entry points over the front half seen from straight above.
+    const float u = std::fmod(0.618034f * float(k), 1.0f), v = std::fmod(0.754878f * float(k) + 0.1f, 1.0f);
+    // Not at grazing, where float round-off alone gives a reflectance of 1e-4.
+    const float height = 0.1f + 0.9f * u, phi = 6.2831853f * v, side = std::sqrt(1.0f - height * height);
+    const glm::vec3 n(side * std::cos(phi), height, side * std::sin(phi));
+    const glm::vec3 p = centre + radius * n, dir = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    if (glm::dot(dir, n) >= 0.0f) continue;
+    const shader::GlassExit same = shader::glassSphereExactExit(p, dir, n, radius, water, water, pool);
+    EXPECT_NEAR(same.reflectance, 0.0f, 1e-7f) << k;
+    EXPECT_NEAR(glm::distance(same.leaving, dir), 0.0f, 1e-5f) << k;
+    EXPECT_NEAR(glm::length(glm::cross(same.exitPoint - p, dir)), 0.0f, 1e-5f) << k;
+    EXPECT_NEAR(glm::distance(same.exitPoint, centre), radius, 1e-5f) << k;
+
+    const float ior = 1.5f;
+    const shader::GlassExit g = shader::glassSphereExactExit(p, dir, n, radius, ior, water, pool);
+    const float cosI = -glm::dot(dir, n), sinI = std::sqrt(1.0f - cosI * cosI);
+    const float sinInside = glm::length(glm::cross(g.inside, n));
+    EXPECT_NEAR(ior * sinInside, water * sinI, 1e-5f) << k;
+    EXPECT_NEAR(g.reflectance, shader::fresnelDielectric(cosI, water, ior), 1e-6f) << k;
+    const glm::vec3 m = glm::normalize(g.exitNormal);
+    EXPECT_NEAR(glm::length(glm::cross(g.leaving, m)), sinI, 1e-5f) << k;
+    EXPECT_GT(glm::dot(g.leaving, m), 0.0f) << k;
+    EXPECT_EQ(g.entryIor, ior / water);
+    EXPECT_EQ(g.exitIor, ior / water);
+  }
+}
+
 // What the raster's search assumes: a ray refracted into a sphere seen from
 // outside leaves it through a back face, one the camera does not see, so
 // the back faces' depth alone brackets the exit. Over the whole visible cap,
@@ -188,7 +226,7 @@ class GlassTest : public GpuTest {
                                            waterPixelsTheGlassChanges(s, reference, without));
     std::printf("the floor through water and a glass %s, one sample, 320x180: %zu water pixels, RMSE %.4f\n", name,
                 e.pixels, e.rmse);
-    ASSERT_GT(e.pixels, 300u) << name;
+    ASSERT_GT(e.pixels, 200u) << name;
     EXPECT_LT(e.rmse, bound) << name;
   }
 
@@ -224,16 +262,19 @@ constexpr double kSceneThroughGlassBound = 0.01;
 // through the water, 0.0502 with the rays split there sampled at a point;
 // with the footprint halved or doubled, 0.0403 and 0.0389. Since the glass's
 // footprints follow its exact paths and filter the sky: 0.0304, and 0.0473
-// with the rays split at the water sampled at a point.
+// with the rays split at the water sampled at a point. Since the glass's
+// exit under the water refracts into the water: 0.0297.
 constexpr double kGlassInWaterAtOneSampleBound = 0.04;
 // The floor through the water and then glass under it, at one sample a
-// pixel against 64 rays (test below). Measured on lavapipe: a sphere 0.0355
-// with the footprint carried through the glass, 0.0525 with the backdrop
-// sampled at a point, 0.0421 with the sphere's faces taken as flat; a box
-// 0.0331, and 0.0355 at a point (its flat faces do not minify the floor: the
-// footprint is the water's, carried on).
-constexpr double kSphereUnderWaterAtOneSampleBound = 0.04;
-constexpr double kBoxUnderWaterAtOneSampleBound = 0.0345;
+// pixel against 64 rays (test below). Measured on lavapipe: a sphere 0.0234
+// with the footprint carried through the glass, 0.0444 with the backdrop
+// sampled at a point; a box 0.0189, and 0.0389 at a point. (With the glass
+// bending as if in the air, its index over the air's, and the backdrop's
+// floor flat at its mean depth: 0.0355 and 0.0331. The index over the
+// water's with that flat floor: 0.0833 and 0.0767, the floor's relief
+// missed where the weaker lens shows the floor under the glass.)
+constexpr double kSphereUnderWaterAtOneSampleBound = 0.03;
+constexpr double kBoxUnderWaterAtOneSampleBound = 0.025;
 // The sky through a glass sphere at one sample a pixel against 64 rays
 // (test below). Measured on lavapipe 0.0310 at the footprint's mip level,
 // 0.0361 at level 0, 0.0330 and 0.0327 with the footprint doubled and
@@ -473,6 +514,62 @@ TEST_F(GlassTest, TheFloorThroughWaterAndGlassIsFilteredAtOneSample) {
                 .ior = 1.5f}};
   expectTheWatersRaysThroughGlassFiltered("sphere", sphere, kSphereUnderWaterAtOneSampleBound);
   expectTheWatersRaysThroughGlassFiltered("box", box, kBoxUnderWaterAtOneSampleBound);
+}
+
+// Glass of the water's own index under the water bends nothing and reflects
+// nothing: seen down through the surface (the water's rays meet it) or from
+// a camera under the water (the glass pass draws it), the frame is the frame
+// without it, in the reference and the raster alike. Over the pixels where
+// glass of index 1.5 in its place shows (the raster's, more than 12 of 255
+// from the frame without it).
+TEST_F(GlassTest, GlassOfTheWatersIndexUnderTheWaterIsNotSeen) {
+  constexpr uint32_t width = 160, height = 90;
+  scene::Scene s = scene::defaultScene();
+  s.ao.enabled = false;
+  s.render.caustics = false;
+  s.water.drops.clear();
+  s.terrain.amplitude = 0.0f;  // a flat floor, clear of the sphere
+  // Clear water: glass of its index is then water in all but name (in
+  // absorbing water the glass's chord would be the clearer).
+  s.water.absorption = glm::vec3(0.0f);
+  s.spheres = {{.center = {0.5f, -0.6f, 0.5f}, .radius = 0.35f, .material = "glass", .ior = 1.5f}};
+  scene::Scene above = s, below = s;
+  above.camera.position = {1.3f, 1.2f, 1.9f};
+  above.camera.target = {0.5f, -0.6f, 0.5f};
+  // Looking down, the surface out of view: in its mirror from below the
+  // raster's water shows glass by the backdrop, the walls in their mean
+  // colour (lib/scene_rays.glsl).
+  below.camera.position = {-0.9f, -0.6f, 1.4f};
+  below.camera.target = {0.5f, -1.0f, 0.5f};
+  for (const auto& [name, view] : {std::pair{"from above", above}, std::pair{"from under the water", below}}) {
+    const scene::Scene without = withoutGlass(view);
+    render::Renderer plainRenderer(ctx(), without, width, height), lensRenderer(ctx(), view, width, height);
+    const auto plain = plainRenderer.render({.frame = 0, .hdr = true}).rgba;
+    const auto lens = render::tonemapToSrgb8(lensRenderer.render({.frame = 0, .hdr = true}).rgba, s.render.exposure);
+    const auto plainLdr = render::tonemapToSrgb8(plain, s.render.exposure);
+    std::vector<uint8_t> mask(size_t(width) * height, 0);
+    for (size_t k = 0; k < mask.size(); ++k)
+      for (int c = 0; c < 3; ++c) mask[k] = mask[k] || std::abs(int(lens[k * 4 + c]) - int(plainLdr[k * 4 + c])) > 12;
+    scene::Scene clear = view;
+    clear.spheres[0].ior = view.water.ior;
+    render::Renderer clearRenderer(ctx(), clear, width, height);
+    const auto raster =
+        render::tonemappedError(clearRenderer.render({.frame = 0, .hdr = true}).rgba, plain, s.render.exposure, mask);
+    const sim::WaterState water = sim::simulateWater(ctx(), view, 0);
+    const auto reference = render::tonemappedError(
+        render::renderReference(clear, &water, 0, width, height, {.samples = 4}).rgba,
+        render::renderReference(without, &water, 0, width, height, {.samples = 4}).rgba, s.render.exposure, mask);
+    std::printf(
+        "glass of the water's index under the water, %s: %zu pixels where glass of 1.5 shows; against the frame "
+        "without it: raster RMSE %.5f max %.4f, reference RMSE %.5f max %.4f\n",
+        name, raster.pixels, raster.rmse, raster.maxError, reference.rmse, reference.maxError);
+    ASSERT_GT(raster.pixels, 200u) << name;  // measured 283 and 719
+    // Measured 0 and 0.0025 (the silhouette's pixels); with the glass's
+    // index taken over the air's, as it was, 0.061 and 0.082 (the reference
+    // 0.070 and 0.089).
+    EXPECT_LT(raster.rmse, 0.01) << name;
+    EXPECT_LT(reference.rmse, 1e-4) << name;
+  }
 }
 
 // A ball lens turns the sky upside down and spreads each pixel's rays over

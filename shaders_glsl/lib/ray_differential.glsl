@@ -77,12 +77,17 @@ vec3 mirroredInBox(vec3 v, vec3 flips, float yaw) { return fromBoxFrame(flips * 
 // v shortened to `most` where it is longer.
 vec3 atMost(vec3 v, float most) { return v * min(1.0, most / max(length(v), 1e-30)); }
 
-GlassDifferentials glassPathDifferentials(GlassExit g, vec3 dir, vec3 n, float ior, float curvature, float yaw,
+// The most a surface of index ratio m bends a ray that passes it: from
+// grazing to the critical angle, pi/2 - asin(1/m), going into the denser
+// medium, and back the other way.
+float refractionTurnBound(float m) { return 0.5 * kPi - asin(min(m, 1.0 / m)); }
+
+GlassDifferentials glassPathDifferentials(GlassExit g, vec3 dir, vec3 n, float curvature, float yaw,
                                           RayDifferential rd) {
   GlassDifferentials result;
   result.reflected = reflectedDifferential(rd, dir, n, curvature * rd.originX, curvature * rd.originY);
   const RayDifferential entered =
-      refractedDifferential(rd, dir, g.inside, n, curvature * rd.originX, curvature * rd.originY, 1.0 / ior);
+      refractedDifferential(rd, dir, g.inside, n, curvature * rd.originX, curvature * rd.originY, 1.0 / g.entryIor);
   // Where the last leg runs against the first, a reflection flipped it.
   const vec3 flips =
       mix(vec3(1.0), vec3(-1.0), lessThan(toBoxFrame(g.inside, yaw) * toBoxFrame(g.lastInside, yaw), vec3(0.0)));
@@ -93,16 +98,17 @@ GlassDifferentials glassPathDifferentials(GlassExit g, vec3 dir, vec3 n, float i
                       mirroredInBox(far.directionX, flips, yaw), mirroredInBox(far.directionY, flips, yaw));
   // The inward normal there, which faces the ray, and how it turns.
   const vec3 m = -g.exitNormal, dmX = -curvature * atExit.originX, dmY = -curvature * atExit.originY;
-  const vec3 refracted = refract(g.lastInside, m, ior);
+  const vec3 refracted = refract(g.lastInside, m, g.exitIor);
   result.leaving = dot(refracted, refracted) > 0.0
-                       ? refractedDifferential(atExit, g.lastInside, g.leaving, m, dmX, dmY, ior)
+                       ? refractedDifferential(atExit, g.lastInside, g.leaving, m, dmX, dmY, g.exitIor)
                        : reflectedDifferential(atExit, g.lastInside, m, dmX, dmY);
   if (curvature > 0.0) {
-    // A sphere turns a ray by at most its rim's deviation, 2 (pi/2 - asin(1 / ior)):
-    // a pixel's rays leave it at most that much wider than they came. Near
-    // the silhouette the linear model overshoots it by far (the turn's
-    // slope grows without bound where the turn itself stays small).
-    const float turn = 2.0 * (0.5 * kPi - asin(1.0 / ior));
+    // A sphere turns a ray by at most what its two surfaces bend it at the
+    // rim, 2 (pi/2 - asin(1 / ior)) in one medium: a pixel's rays leave it
+    // at most that much wider than they came. Near the silhouette the linear
+    // model overshoots it by far (the turn's slope grows without bound where
+    // the turn itself stays small).
+    const float turn = refractionTurnBound(g.entryIor) + refractionTurnBound(g.exitIor);
     result.leaving.directionX = atMost(result.leaving.directionX, length(rd.directionX) + turn);
     result.leaving.directionY = atMost(result.leaving.directionY, length(rd.directionY) + turn);
   }

@@ -11,7 +11,10 @@
 // the exit point, refracted out by the exit normal, with no Fresnel loss
 // there; where it cannot leave (total internal reflection) it takes the
 // internally reflected direction instead, once, as if it left that way (a
-// box: it reflects on inside, up to TP_GLASS_BOX_REFLECTIONS times). Both
+// box: it reflects on inside, up to TP_GLASS_BOX_REFLECTIONS times). Each
+// surface bends the ray by the glass's index over the index of what lies
+// beyond it: the medium the ray came in at the front, and at the exit the
+// pool's water or the air, by where the exit point lies (GlassSurround). Both
 // rays that leave, the reflection and the exit ray, look up the scene: the
 // raster by the analytic casts the water's rays use (lib/scene_rays.glsl),
 // the reference by tracing them. Where the raster cannot go on (glass seen
@@ -58,37 +61,29 @@ TP_INLINE float fresnelDielectric(float cosI, float n1, float n2) {
   return 0.5f * (rs * rs + rp * rp);
 }
 
+// Where glass stands: in the pool's water below its rest level inside the
+// pool's square, in the air elsewhere. The surface is taken as flat there,
+// as it is for the rays that leave the glass (lib/scene_rays.glsl's
+// inPoolWater, the reference's).
+struct GlassSurround {
+  float level;     // the water's rest level
+  float poolHalf;  // half the pool's side; 0: no water
+  float waterIor;  // the water's index of refraction
+};
+
+// The index of refraction of what lies round the glass at p.
+TP_INLINE float surroundIndexAt(GlassSurround s, vec3 p) {
+  return s.poolHalf > 0.0f && max(abs(p.x), abs(p.z)) < s.poolHalf && p.y < s.level ? s.waterIor : 1.0f;
+}
+
 // The ray inside the glass, direction t (unit), leaving through a surface of
-// outward normal nOut: refracted out into the air, or, under total internal
-// reflection, reflected back in (the direction then looked up as if it left).
+// outward normal nOut, ior the glass's index over the index beyond: refracted
+// out, or, under total internal reflection, reflected back in (the direction
+// then looked up as if it left).
 TP_INLINE vec3 glassExitDirection(vec3 t, vec3 nOut, float ior) {
   vec3 leaving = refract(t, -nOut, ior);
   if (dot(leaving, leaving) == 0.0f) return reflect(t, -nOut);
   return normalize(leaving);
-}
-
-// The exact paths of a ray, direction dir (unit), meeting a glass sphere at a
-// point of outward normal n: its reflection, its refraction into the glass,
-// the chord it crosses and the ray that leaves at the chord's far end. With
-// the sphere's centre c and radius r, p - c = r n: the far end lies at
-// distance -2 r (n . t) along t, where the normal is n mirrored in the plane
-// normal to t. The raster's glass pass finds that end in image space instead.
-struct GlassPaths {
-  float reflectance;  // exact Fresnel at the front surface
-  vec3 reflected;
-  vec3 inside;
-  float chord;  // in radii: the exit point is p + chord r inside
-  vec3 leaving;
-};
-
-TP_INLINE GlassPaths glassSpherePaths(vec3 dir, vec3 n, float ior) {
-  GlassPaths g;
-  g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, ior);
-  g.reflected = reflect(dir, n);
-  g.inside = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
-  g.chord = -2.0f * dot(n, g.inside);
-  g.leaving = glassExitDirection(g.inside, n + g.chord * g.inside, ior);
-  return g;
 }
 
 // Whether the ray leaving through nOut is totally internally reflected.
@@ -110,21 +105,43 @@ struct GlassExit {
   float insideLength;  // the path's length, its legs between reflections summed
   vec3 lastInside;     // the direction of its last leg
   vec3 exitNormal;     // the outward normal where that leg ends
+  // The glass's index over the index beyond it, at the entry and at the exit.
+  float entryIor;
+  float exitIor;
 };
 
-// A sphere's exact paths (glassSpherePaths) from p on it, outward normal n:
-// the exit at the chord's far end.
-TP_INLINE GlassExit glassSphereExactExit(vec3 p, vec3 dir, vec3 n, float radius, float ior) {
-  GlassPaths paths = glassSpherePaths(dir, n, ior);
+// The front surface, met at a point of outward normal n along dir (unit):
+// its reflection and the refraction into the glass. outside: the index of
+// the medium the ray comes in. Where the glass's index is the lower of the
+// two, the ray may be reflected whole; the way in is then the ray's own
+// (its weight is zero), so that what follows it stays finite.
+TP_INLINE GlassExit glassFrontSurface(vec3 dir, vec3 n, float ior, float outside) {
   GlassExit g;
-  g.reflectance = paths.reflectance;
-  g.reflected = paths.reflected;
-  g.insideLength = paths.chord * radius;
-  g.exitPoint = p + g.insideLength * paths.inside;
-  g.leaving = paths.leaving;
-  g.inside = paths.inside;
-  g.lastInside = paths.inside;
-  g.exitNormal = n + paths.chord * paths.inside;
+  g.entryIor = ior / outside;
+  g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, g.entryIor);
+  g.reflected = reflect(dir, n);
+  g.inside = refract(dir, n, 1.0f / g.entryIor);
+  if (dot(g.inside, g.inside) == 0.0f) g.inside = dir;
+  return g;
+}
+
+// The exact paths of a ray, direction dir (unit), meeting a glass sphere of
+// `radius` and index `ior` at p, outward normal n, from a medium of index
+// `outside`: its reflection, its refraction into the glass, the chord it
+// crosses and the ray that leaves at the chord's far end. With the sphere's
+// centre c, p - c = radius n: the far end lies at distance -2 radius (n . t)
+// along t, where the normal is n mirrored in the plane normal to t. The
+// raster's glass pass finds that end in image space instead.
+TP_INLINE GlassExit glassSphereExactExit(vec3 p, vec3 dir, vec3 n, float radius, float ior, float outside,
+                                         GlassSurround s) {
+  GlassExit g = glassFrontSurface(dir, n, ior, outside);
+  float chord = -2.0f * dot(n, g.inside);  // in radii
+  g.insideLength = chord * radius;
+  g.exitPoint = p + g.insideLength * g.inside;
+  g.lastInside = g.inside;
+  g.exitNormal = n + chord * g.inside;
+  g.exitIor = ior / surroundIndexAt(s, g.exitPoint);
+  g.leaving = glassExitDirection(g.inside, g.exitNormal, g.exitIor);
   return g;
 }
 
@@ -138,17 +155,17 @@ TP_INLINE GlassExit glassSphereExactExit(vec3 p, vec3 dir, vec3 n, float radius,
 // Eight is more than a box four times as long as it is wide needs.
 #define TP_GLASS_BOX_REFLECTIONS 8
 
-// The exact paths of a ray, direction dir (unit), meeting a glass box at p on
-// a face of outward normal n: its reflection there, and its refraction in,
-// followed through the box's reflections to the face it leaves by.
-TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 halfSize, float ior) {
-  GlassExit g;
-  g.reflectance = fresnelDielectric(max(-dot(dir, n), 0.0f), 1.0f, ior);
-  g.reflected = reflect(dir, n);
+// The exact paths of a ray, direction dir (unit), meeting a glass box of
+// index `ior` at p on a face of outward normal n, from a medium of index
+// `outside`: its reflection there, and its refraction in, followed through
+// the box's reflections to the face it leaves by. Each face it meets
+// reflects it whole or lets it out by what lies beyond that point.
+TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 halfSize, float ior, float outside,
+                                  GlassSurround surround) {
+  GlassExit g = glassFrontSurface(dir, n, ior, outside);
   // In the box's frame, from p held inside it (round-off may put it out).
   vec3 h = vec3(halfSize);
   vec3 o = clamp(toBoxFrame(p - vec3(center), center.w), -h, h);
-  g.inside = refract(dir, n, 1.0f / ior);  // from air into glass: always refracts
   vec3 d = toBoxFrame(g.inside, center.w);
   vec3 nOut = vec3(0.0f);
   g.insideLength = 0.0f;
@@ -167,11 +184,12 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
     g.insideLength += s;
     nOut = vec3(0.0f);
     nOut[axis] = d[axis] > 0.0f ? 1.0f : -1.0f;
-    if (k == TP_GLASS_BOX_REFLECTIONS || !glassTotalInternalReflection(d, nOut, ior)) break;
+    g.exitPoint = vec3(center) + fromBoxFrame(o, center.w);
+    g.exitIor = ior / surroundIndexAt(surround, g.exitPoint);
+    if (k == TP_GLASS_BOX_REFLECTIONS || !glassTotalInternalReflection(d, nOut, g.exitIor)) break;
     d[axis] = -d[axis];
   }
-  g.exitPoint = vec3(center) + fromBoxFrame(o, center.w);
-  g.leaving = fromBoxFrame(glassExitDirection(d, nOut, ior), center.w);
+  g.leaving = fromBoxFrame(glassExitDirection(d, nOut, g.exitIor), center.w);
   g.lastInside = fromBoxFrame(d, center.w);
   g.exitNormal = fromBoxFrame(nOut, center.w);
   return g;

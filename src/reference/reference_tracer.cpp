@@ -187,8 +187,9 @@ class Tracer {
     }
     if (!glass && !glassBox && !hit.hit()) return inWater ? glm::vec3(0.0f) : sky(dir);
     const glm::vec3 p = origin + distance * dir;
-    const glm::vec3 leaving = glassBox ? glassBoxRadiance(*glassBox, boxNormal, p, dir, specular, path, first)
-                              : glass  ? glassRadiance(*glass, p, dir, specular, path, first)
+    const float outside = inWater ? ior_ : 1.0f;  // the index of the medium the ray is in
+    const glm::vec3 leaving = glassBox ? glassBoxRadiance(*glassBox, boxNormal, p, dir, outside, specular, path, first)
+                              : glass  ? glassRadiance(*glass, p, dir, outside, specular, path, first)
                                        : surfaceRadiance(p, dir, hit, specular, path, first);
     if (!inWater) return leaving;
     return glm::exp(-extinction_ * distance) * leaving + inScatter(origin, dir, distance, path);
@@ -328,15 +329,17 @@ class Tracer {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
 
-  // The glass model of shared/glass.h with the exact exit point: the
-  // reflected ray and the ray leaving the chord's far end traced on, in the
-  // water where they start under its rest level in the pool. Past the
-  // specular depth they look up the sky, as the raster's deepest rays do.
-  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir, uint32_t specular, PathSample path,
-                          SurfacePoint* first) const {
+  // The glass model of shared/glass.h with the exact exit point, met by a
+  // ray in a medium of index `outside`: the reflected ray and the ray
+  // leaving the chord's far end traced on, in the water where they start
+  // under its rest level in the pool (where the exit refracts into water).
+  // Past the specular depth they look up the sky, as the raster's deepest
+  // rays do.
+  glm::vec3 glassRadiance(const scene::Sphere& glass, glm::vec3 p, glm::vec3 dir, float outside, uint32_t specular,
+                          PathSample path, SurfacePoint* first) const {
     const glm::vec3 n = glm::normalize(p - glass.center);
     if (first) *first = {p, n};
-    const shader::GlassExit g = shader::glassSphereExactExit(p, dir, n, glass.radius, glass.ior);
+    const shader::GlassExit g = shader::glassSphereExactExit(p, dir, n, glass.radius, glass.ior, outside, surround());
     if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr, &glass);
@@ -346,17 +349,20 @@ class Tracer {
 
   // The same for glass box `b`, met at p on the face of outward normal n:
   // the exact path through it (shared/glass.h).
-  glm::vec3 glassBoxRadiance(size_t b, glm::vec3 n, glm::vec3 p, glm::vec3 dir, uint32_t specular, PathSample path,
-                             SurfacePoint* first) const {
+  glm::vec3 glassBoxRadiance(size_t b, glm::vec3 n, glm::vec3 p, glm::vec3 dir, float outside, uint32_t specular,
+                             PathSample path, SurfacePoint* first) const {
     if (first) *first = {p, n};
-    const shader::GlassExit g =
-        shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize, glassBoxes_[b].glass.x);
+    const shader::GlassExit g = shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize,
+                                                      glassBoxes_[b].glass.x, outside, surround());
     if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr);
     };
     return glm::mix(follow(g.exitPoint, g.leaving), follow(p, g.reflected), g.reflectance);
   }
+
+  // What lies round glass: the pool's water below its rest level, the air.
+  shader::GlassSurround surround() const { return {level_, waterMesh_ >= 0 ? poolHalf_ : 0.0f, ior_}; }
 
   // Whether p lies in the pool's water, below its rest level.
   bool inPoolWater(glm::vec3 p) const {
