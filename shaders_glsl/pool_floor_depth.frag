@@ -4,7 +4,8 @@
 // pool_floor.frag in frames whose camera sees the floor only through the
 // water (shading/water_model.cpp's floorSeenOnlyThroughWater), whose shader
 // draws over it with what its refracted rays see. AO still needs the floor's
-// depth and normal.
+// depth and normal. The same for the walls' bands under the water in those
+// frames (shared/pool.h).
 #include "shared/frame.h"
 #include "lib/gbuffer.glsl"
 

@@ -94,6 +94,25 @@ TP_INLINE vec3 poolWallMeanAlbedo(PoolParams p) {
 // The lowest the floor can be: where the walls end.
 TP_INLINE float poolBottom(PoolParams p) { return p.box.y - p.box.z - 0.5f * p.box.w; }
 
+// The walls are drawn as bands, level strips from the rim to the bottom,
+// each pair of neighbours sharing a whole edge. In a frame whose camera sees
+// the walls below a height only through the water, which draws over them,
+// and whose AO reads their depth and normal, the bands wholly below that
+// height give their depth and normal alone (pool_floor_depth.frag) and the
+// rest are lit (pool_walls.frag). Every frame draws the same triangles, so
+// their depth is the same to the bit whichever way a band is drawn.
+#define TP_POOL_WALL_BANDS 16
+
+// Push constants of the walls' draws (pool_walls.vert): the bands drawn.
+struct PoolWallsParams {
+  uvec4 bands;  // x: the first, counted from the rim; y: how many
+};
+
+// The height of the edge above band `band` (TP_POOL_WALL_BANDS: the bottom).
+TP_INLINE float poolWallBandTop(PoolParams p, uint band) {
+  return p.box.y + (poolBottom(p) - p.box.y) * (float(band) / float(TP_POOL_WALL_BANDS));
+}
+
 TP_END
 
 #ifdef __cplusplus

@@ -41,7 +41,7 @@ Aovs::Aovs(const gpu::Context& ctx, FrameGraph& graph, vk::Extent2D frame, bool 
   positionRef_ = graph.image("position", position_);
   depthRef_ = graph.image("aov depth", depth_);
   if (withPoolAndWater) {
-    walls_ = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", 0));
+    walls_ = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_walls.vert", sizeof(shader::PoolWallsParams)));
     floor_ = gpu::createGraphicsPipeline(ctx, aovPipeline("pool_floor.vert", sizeof(glm::uvec4)));
     gpu::GraphicsPipelineDesc water = aovPipeline("water_surface.vert", sizeof(shader::WaterSurfaceParams));
     water.topology = vk::PrimitiveTopology::eTriangleStrip;  // the renderer's water indices (waterGridStrips)

@@ -16,7 +16,8 @@ namespace tp::render {
 Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
            const gpu::Buffer& objects, const SwappingBuffer& waterCells)
     : floorMesh_(ctx, kPoolFloorGrid, false, "pool floor"),
-      walls_(gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", 0, needs))),
+      walls_(gpu::createGraphicsPipeline(
+          ctx, opaquePipeline("pool_walls.vert", "pool_walls.frag", sizeof(shader::PoolWallsParams), needs))),
       floor_(gpu::createGraphicsPipeline(
           ctx, opaquePipeline("pool_floor.vert", "pool_floor.frag", sizeof(glm::uvec4), needs))),
       // No light, so no variants but with and without the G-buffer.
@@ -28,8 +29,13 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
         desc.colorWrites = false;
         return desc;
       }())) {
+  if (needs.gbuffer) {
+    wallsUnder_ = gpu::createGraphicsPipeline(ctx, opaquePipeline("pool_walls.vert", "pool_floor_depth.frag",
+                                                                  sizeof(shader::PoolWallsParams), {.gbuffer = true}));
+  }
   const PoolModel model = poolModel(scene);
   const shader::PoolParams& pool = model.params;
+  params_ = pool;
   floorTop_ = pool.terrain.w;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "pool uniforms");
@@ -101,7 +107,16 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
           set.bind(pc.cmd, cover_, pc.descriptors);
           gpu::draw(pc.cmd, kCoverVertices);
         }
-        drawPool(pc.cmd, pc.descriptors, walls_, floorPipeline, set, draw_);
+        // The bands wholly under the cut give their depth and normal alone.
+        uint32_t lit = TP_POOL_WALL_BANDS;
+        if (how.wallsCut && wallsUnder_) {
+          for (lit = 0; lit < TP_POOL_WALL_BANDS; ++lit)
+            if (shader::poolWallBandTop(params_, lit) <= *how.wallsCut) break;
+        }
+        drawPoolWalls(pc.cmd, pc.descriptors, walls_, set, 0, lit);
+        if (lit < TP_POOL_WALL_BANDS)
+          drawPoolWalls(pc.cmd, pc.descriptors, *wallsUnder_, set, lit, TP_POOL_WALL_BANDS - lit);
+        if (floorPipeline) drawPoolFloor(pc.cmd, pc.descriptors, *floorPipeline, set, draw_);
       });
     };
   });
@@ -129,15 +144,25 @@ NoPool::NoPool(const gpu::Context& ctx, FrameGraph& graph, const gpu::Buffer& ob
       {{graph.buffer("no water cells", waterCell_).ref}, [this]() -> const gpu::Buffer& { return waterCell_; }}};
 }
 
+void drawPoolWalls(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
+                   const Bindings& set, uint32_t first, uint32_t count) {
+  if (count == 0) return;
+  gpu::bindPipeline(cmd, walls, shader::PoolWallsParams{glm::uvec4(first, count, 0u, 0u)});
+  set.bind(cmd, walls, arena);
+  gpu::draw(cmd, 24 * count);  // pool_walls.vert: four quads a band
+}
+
+void drawPoolFloor(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& floor,
+                   const Bindings& set, const PoolDraw& pool) {
+  gpu::bindPipeline(cmd, floor, glm::uvec4(pool.floor->vertices(), 0u, 0u, 0u));
+  set.bind(cmd, floor, arena);
+  pool.floor->draw(cmd);
+}
+
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
               const gpu::Pipeline* floor, const Bindings& set, const PoolDraw& pool) {
-  cmd.bindPipeline(walls.bindPoint, *walls.pipeline);
-  set.bind(cmd, walls, arena);
-  gpu::draw(cmd, kWallVertices);
-  if (!floor) return;
-  gpu::bindPipeline(cmd, *floor, glm::uvec4(pool.floor->vertices(), 0u, 0u, 0u));
-  set.bind(cmd, *floor, arena);
-  pool.floor->draw(cmd);
+  drawPoolWalls(cmd, arena, walls, set, 0, TP_POOL_WALL_BANDS);
+  if (floor) drawPoolFloor(cmd, arena, *floor, set, pool);
 }
 
 }  // namespace tp::render

@@ -10,13 +10,13 @@
 #include "render/water_draw.hpp"
 #include "scene/scene.hpp"
 #include "shared/ground.h"
+#include "shared/pool.h"
 
 namespace tp::render {
 
 // The caustics hold two values a texel, the ratio and the layers that reach
 // it (caustics.frag): a format every device must blend and sample linearly.
 constexpr vk::Format kCausticsFormat = vk::Format::eR16G16Sfloat;
-constexpr uint32_t kWallVertices = 24;  // pool_walls.vert: four quads
 constexpr uint32_t kCoverVertices = 6;  // pool_cover.vert: one quad
 
 // What other passes need of the pool: its uniforms, the objects the rays
@@ -53,10 +53,13 @@ class Pool {
   // everything in the pool through the water below a height, and nothing
   // reads the depth there but the water, a level square at that height,
   // drawn first into the depth alone (pool_cover.vert), so that the depth
-  // test leaves out the walls and objects under it.
+  // test leaves out the walls and objects under it. Where the SSAO reads
+  // that depth, the walls are lit above the height alone and give their
+  // depth and normal below it (shared/pool.h's PoolWallsParams).
   struct Drawn {
     Floor floor;
     std::optional<float> coverAt;
+    std::optional<float> wallsCut;
   };
   // `drawn` is asked as each frame records.
   void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
@@ -78,6 +81,8 @@ class Pool {
   gpu::Image caustics_;
   PoolDraw draw_;
   gpu::Pipeline walls_, floor_, floorDepth_, cover_;
+  std::optional<gpu::Pipeline> wallsUnder_;  // with the G-buffer: the walls' bands under the cut
+  shader::PoolParams params_;
   float floorTop_ = 0.0f;
   std::optional<gpu::Pipeline> causticsPipeline_;
 };
@@ -97,7 +102,14 @@ class NoPool {
   PoolDraw draw_;
 };
 
-// The walls, then the floor (none: no floor), with `set` holding what either reads.
+// `count` of the walls' bands from `first` (shared/pool.h), with `set`
+// holding what the pipeline reads.
+void drawPoolWalls(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
+                   const Bindings& set, uint32_t first, uint32_t count);
+// The floor.
+void drawPoolFloor(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& floor,
+                   const Bindings& set, const PoolDraw& pool);
+// The walls, all their bands, then the floor (none: no floor).
 void drawPool(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& walls,
               const gpu::Pipeline* floor, const Bindings& set, const PoolDraw& pool);
 

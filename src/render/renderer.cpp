@@ -96,10 +96,11 @@ struct Renderer::Resources {
     if (pool) {
       pool->declare(graph, surfaces, in, [this] {
         if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
-          return Pool::Drawn{Pool::Floor::Lit, std::nullopt};
+          return Pool::Drawn{Pool::Floor::Lit, std::nullopt, std::nullopt};
         // Nothing but the SSAO reads the depth and normals the water draws over.
-        if (aoMakesItsInputs()) return Pool::Drawn{Pool::Floor::DepthAndNormal, std::nullopt};
-        return Pool::Drawn{Pool::Floor::None, seenOnlyThroughWaterBelow(live, water->largestHeight())};
+        const float below = seenOnlyThroughWaterBelow(live, water->largestHeight());
+        if (aoMakesItsInputs()) return Pool::Drawn{Pool::Floor::DepthAndNormal, std::nullopt, below};
+        return Pool::Drawn{Pool::Floor::None, below, std::nullopt};
       });
     }
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
