@@ -200,21 +200,24 @@ vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
 
 #ifdef TP_GLASS
 // What a glass sphere or box met by the water's rays shows along one of its exact
-// paths: the backdrop, the scene without its objects, in straight-line code.
-// Lavapipe runs every branch of the water's shader for every pixel (masked)
-// and every loop at least once, so what is written here costs the whole
-// water surface: the walls are plain (their bricks' colour, no gloss), and
-// there are no shadows, caustics or scattered light. The floor's relief is
-// walked as the water's own rays walk it: flat at its mean depth it was
-// missed where a weak lens (glass under the water) shows the floor under
-// it, and the walk cost the water pass of scenes/glass.json 1.1 times. At the flat water the ray into the air looks up the
-// sky; from below, the reflection is left out unless the surface reflects
-// it all. Measured: the brick walls' code alone took the default-size
-// water pass from 178 to 215 ms. rd, the ray's differential at p, is
-// carried through the flat water to the floor or the ground, whose
-// pattern it filters. The sky it looks up at level 0: filtered, it came no
-// nearer the reference (GlassTest.GlassShowsInTheWatersReflectionsAndRefractions
-// against 256 rays a pixel: 0.0365 either way) and cost every water pixel.
+// paths: the backdrop, the scene without its objects, in straight-line code
+// (a shader cannot recurse into the casts that met the glass). Lavapipe runs
+// every branch of the water's shader for every pixel (masked) and every loop
+// at least once, so what is written here costs the whole water surface. It
+// shades what it meets as the water's own rays do, the floor's relief, the
+// walls' pattern and gloss, the shadows and the caustics included, but
+// leaves out the light the water scatters: with the floor flat at its mean
+// depth, plain walls and no shadows, a weak lens (glass under the water)
+// and glass in the surface's mirror from below showed the difference
+// (docs/glass.md), and the water pass of scenes/glass.json now takes 1.1
+// times for the floor's walk and 1.1 times more for the rest. At the flat
+// water the ray into the air looks up the sky; from below, the reflection
+// is left out unless the surface reflects it all. rd, the ray's
+// differential at p, is carried through the flat water to the floor or the
+// ground, whose pattern it filters. The sky it looks up at level 0:
+// filtered, it came no nearer the reference
+// (GlassTest.GlassShowsInTheWatersReflectionsAndRefractions against 256
+// rays a pixel: 0.0365 either way) and cost every water pixel.
 vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
   vec3 sum = vec3(0.0), weight = vec3(1.0);
   // What the ray ends on, shaded once below: the ground, a wall, the floor, or the sky.
@@ -249,24 +252,21 @@ vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
     }
   }
   float travel = 0.0;  // through the water
+  PoolHit poolMet = poolHit(1e30, vec3(0.0), vec3(0.0, 1.0, 0.0), false);
   if (water) {
     // A wall, or the floor with its relief, as the water's own rays meet it.
-    const PoolHit hit = tracePool(pool, p, r);
-    end = AirHit(hit.distance, hit.floor ? kMetGround : kMetWall, hit.normal);
+    poolMet = tracePool(pool, p, r);
+    end = AirHit(poolMet.distance, poolMet.floor ? kMetGround : kMetWall, poolMet.normal);
     travel = end.distance;
   }
   const vec3 q = p + end.distance * r;
   const vec2 footprint = hitFootprint(rd, r, end.distance, end.normal);
-  vec3 seen;
-  if (end.met == kMetNothing) {
-    seen = sky(r);
-  } else if (end.met == kMetWall) {
-    seen = lambertRadiance(frame, poolWallMeanAlbedo(pool), end.normal, 1.0);
-  } else if (water) {
-    seen = poolFloorRadiance(pool, frame, q, end.normal, footprint, 1.0);
-  } else {
-    seen = groundRadiance(pool.ground, frame, q.xz, footprint, end.normal, 1.0);
-  }
+  // As the water's and the glass's own rays shade what they meet, shadows
+  // and caustics included.
+  const float sunShare = water ? sunUnderWater(q) : frameSunShare(q);
+  const vec3 seen = end.met == kMetNothing ? sky(r)
+                    : water                ? poolSurfaceSeen(poolMet, r, footprint, sunShare)
+                                           : airSurfaceSeen(end, q, r, footprint, sunShare);
   return sum + weight * seen * exp(-pool.extinction.rgb * travel);
 }
 
