@@ -3,6 +3,7 @@
 // values (valuesPerPoint vec4s a point), 2 the pool's uniforms where the
 // shader takes them (`pool` not null), the count pushed. What the GPU
 // computed, for the tests to hold against the CPU's.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,10 @@ std::vector<glm::vec4> shaderAtPoints(const gpu::Context& ctx, const std::string
   const uint32_t count = uint32_t(points.size());
   auto pointBuffer =
       gpu::createFilledBuffer(ctx, points, vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Upload, "points");
-  const shader::PoolParams none{};
-  auto poolBuffer =
-      gpu::createFilledBuffer(ctx, pool ? pool : &none, sizeof(none), vk::BufferUsageFlagBits::eUniformBuffer,
-                              gpu::MemoryUse::Upload, "pool uniforms");
+  std::optional<gpu::Buffer> poolBuffer;
+  if (pool)
+    poolBuffer.emplace(gpu::createFilledBuffer(ctx, pool, sizeof(*pool), vk::BufferUsageFlagBits::eUniformBuffer,
+                                               gpu::MemoryUse::Upload, "pool uniforms"));
   auto values = gpu::createBuffer(ctx, valuesPerPoint * count * sizeof(glm::vec4),
                                   vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
                                   gpu::MemoryUse::Device, "values");
@@ -35,7 +36,7 @@ std::vector<glm::vec4> shaderAtPoints(const gpu::Context& ctx, const std::string
     gpu::bindPipeline(cmd, pipeline, count);
     gpu::DescriptorWrites writes;
     writes.storageBuffer(0, pointBuffer).storageBuffer(1, values);
-    if (pool) writes.uniformBuffer(2, poolBuffer);
+    if (poolBuffer) writes.uniformBuffer(2, *poolBuffer);
     writes.bind(cmd, pipeline, arena);
     gpu::dispatchCovering(cmd, pipeline, count);
   });

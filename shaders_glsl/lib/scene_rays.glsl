@@ -64,8 +64,12 @@ vec3 inScatter(vec3 start, vec3 dir, float length) {
 vec3 inScatter(vec3 start, vec3 dir, float length) { return vec3(0.0); }
 #endif
 
+// What lies round glass, and round the rays that leave it: the pool's water
+// below its rest level, the air.
+GlassSurround glassSurround() { return GlassSurround(pool.water.x, pool.box.x, pool.water.y); }
+
 // Whether p lies in the pool's water, below its rest level.
-bool inPoolWater(vec3 p) { return pool.box.x > 0.0 && max(abs(p.x), abs(p.z)) < pool.box.x && p.y < pool.water.x; }
+bool inPoolWater(vec3 p) { return inSurroundingWater(glassSurround(), p); }
 
 // The sun through the waves at `met` under the water, relative to flat
 // water: the caustics texture at its light line.
@@ -158,9 +162,6 @@ FlatWaterSplit flatWaterSplit(vec3 r, bool fromWater) {
   return FlatWaterSplit(reflectance, reflect(r, facing),
                         refract(r, facing, fromWater ? pool.water.y : 1.0 / pool.water.y));
 }
-
-// What lies round glass: the pool's water below its rest level, the air.
-GlassSurround glassSurround() { return GlassSurround(pool.water.x, pool.box.x, pool.water.y); }
 
 // The index of the medium a ray is in: the water's or the air's.
 float mediumIndex(bool water) { return water ? pool.water.y : 1.0; }

@@ -71,10 +71,13 @@ struct GlassSurround {
   float waterIor;  // the water's index of refraction
 };
 
-// The index of refraction of what lies round the glass at p.
-TP_INLINE float surroundIndexAt(GlassSurround s, vec3 p) {
-  return s.poolHalf > 0.0f && max(abs(p.x), abs(p.z)) < s.poolHalf && p.y < s.level ? s.waterIor : 1.0f;
+// Whether p lies in the pool's water, below its rest level.
+TP_INLINE bool inSurroundingWater(GlassSurround s, vec3 p) {
+  return s.poolHalf > 0.0f && max(abs(p.x), abs(p.z)) < s.poolHalf && p.y < s.level;
 }
+
+// The index of refraction of what lies round the glass at p.
+TP_INLINE float surroundIndexAt(GlassSurround s, vec3 p) { return inSurroundingWater(s, p) ? s.waterIor : 1.0f; }
 
 // The ray inside the glass, direction t (unit), leaving through a surface of
 // outward normal nOut, ior the glass's index over the index beyond: refracted
