@@ -2,13 +2,17 @@
 #extension GL_GOOGLE_include_directive : require
 // Health statistics of the water state, one partial per 16x16 workgroup
 // (a tree reduction in shared memory); the host adds the partials in double.
-#include "lib/water_update.glsl"
+#include "shared/water.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 const uint GROUP = 256;
 layout(binding = 0) readonly buffer State { WaterCell cells[]; };
 layout(binding = 1) writeonly buffer Partials { WaterStatsPartial partials[]; };
+layout(binding = 4) readonly buffer Solid { uint solidDepths[]; };
 layout(push_constant) uniform Push { WaterStatsParams params; };
+
+#include "lib/water_solid.glsl"
+#include "lib/water_update.glsl"
 
 shared float sMaxU[GROUP];
 shared float sMaxV[GROUP];
@@ -16,9 +20,12 @@ shared float sSumU[GROUP];
 shared float sEnergy[GROUP];
 shared uint sNonFinite[GROUP];
 
-float heightAt(int i, int j) {
+// The height open cell `self` sees at (i, j): its own where that is solid,
+// as the step does, so that no edge of a solid cell holds energy.
+float heightAt(int self, int i, int j) {
   int n = int(params.n);
-  return cells[waterNeighbour(j, n, params.boundary) * n + waterNeighbour(i, n, params.boundary)].u;
+  const int k = waterNeighbour(j, n, params.boundary) * n + waterNeighbour(i, n, params.boundary);
+  return cells[kSolids ? waterOpenNeighbour(self, k) : k].u;
 }
 
 void main() {
@@ -28,12 +35,15 @@ void main() {
   float maxU = 0.0, maxV = 0.0, sumU = 0.0, energy = 0.0;
   uint nonFinite = 0u;
   if (p.x < n && p.y < n) {
-    const WaterCell c = cells[p.y * n + p.x];
-    if (isnan(c.u) || isinf(c.u) || isnan(c.v) || isinf(c.v)) {
+    const int self = p.y * n + p.x;
+    const WaterCell c = cells[self];
+    // A solid cell holds no water: its height is a ghost of its neighbours' (lib/water_solid.glsl).
+    const bool holdsWater = !kSolids || !waterSolid(self);
+    if (holdsWater && (isnan(c.u) || isinf(c.u) || isnan(c.v) || isinf(c.v))) {
       nonFinite = 1u;
-    } else {
-      const float uW = heightAt(p.x - 1, p.y), uE = heightAt(p.x + 1, p.y);
-      const float uS = heightAt(p.x, p.y - 1), uN = heightAt(p.x, p.y + 1);
+    } else if (holdsWater) {
+      const float uW = heightAt(self, p.x - 1, p.y), uE = heightAt(self, p.x + 1, p.y);
+      const float uS = heightAt(self, p.x, p.y - 1), uN = heightAt(self, p.x, p.y + 1);
       maxU = abs(c.u);
       maxV = abs(c.v);
       sumU = c.u;

@@ -9,6 +9,7 @@
 layout(local_size_x = 64, local_size_y = 1) in;
 layout(binding = 0) readonly buffer Src { vec4 src[]; };
 layout(binding = 1) writeonly buffer Dst { vec4 dst[]; };
+layout(binding = 4) readonly buffer Solid { uint solidDepths[]; };
 layout(push_constant) uniform Push { WaterStepParams params; };
 
 #include "lib/water_step_cell.glsl"

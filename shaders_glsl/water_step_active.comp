@@ -12,6 +12,7 @@ layout(binding = 0) readonly buffer Src { vec4 src[]; };
 layout(binding = 1) writeonly buffer Dst { vec4 dst[]; };
 layout(binding = 2) buffer ChangedAt { uint changedAt[]; };
 layout(binding = 3) readonly buffer TileList { uint tileList[]; };
+layout(binding = 4) readonly buffer Solid { uint solidDepths[]; };
 layout(push_constant) uniform Push { WaterTileStepParams params; };
 
 #include "lib/water_step_cell.glsl"

@@ -5,7 +5,7 @@
 // steps there (the valid region shrinks by one cell a step), and writes the
 // inner (TILE - 2 HALO)^2 cells. Memory traffic per step falls by the number
 // of steps; the halo's redundant work is the price.
-#include "lib/water_update.glsl"
+#include "shared/water.h"
 
 layout(constant_id = 0) const int HALO = 4;
 layout(local_size_x = 32, local_size_y = 32) in;
@@ -14,7 +14,11 @@ const int INNER = TILE - 2 * HALO;
 
 layout(binding = 0) readonly buffer Src { WaterCell src[]; };
 layout(binding = 1) writeonly buffer Dst { WaterCell dst[]; };
+layout(binding = 4) readonly buffer Solid { uint solidDepths[]; };
 layout(push_constant) uniform Push { WaterStepParams params; };
+
+#include "lib/water_solid.glsl"
+#include "lib/water_update.glsl"
 
 shared float su[TILE * TILE];
 shared float sv[TILE * TILE];
@@ -41,6 +45,24 @@ void main() {
     south.y = clamp(g.y - 1, 0, n - 1) - origin.y;
     north.y = clamp(g.y + 1, 0, n - 1) - origin.y;
   }
+  // A solid neighbour reads as the cell itself, and a solid cell's height is
+  // a ghost of its neighbours' (lib/water_solid.glsl).
+  bool solidCell = false;
+  const ivec2 west0 = west, east0 = east, south0 = south, north0 = north;  // before the solid ones are replaced
+  bvec4 nearer = bvec4(false);
+  if (kSolids) {
+    const uint depth = waterSolidDepth(load.y * n + load.x);
+    solidCell = depth != 0u;
+    const int gw = load.y * n + waterNeighbour(g.x - 1, n, params.boundary);
+    const int ge = load.y * n + waterNeighbour(g.x + 1, n, params.boundary);
+    const int gs = waterNeighbour(g.y - 1, n, params.boundary) * n + load.x;
+    const int gn = waterNeighbour(g.y + 1, n, params.boundary) * n + load.x;
+    nearer = waterNearer(depth, gw, ge, gs, gn);
+    if (waterSolid(gw)) west = l;
+    if (waterSolid(ge)) east = l;
+    if (waterSolid(gs)) south = l;
+    if (waterSolid(gn)) north = l;
+  }
   const int steps = int(min(params.steps, uint(HALO)));
   for (int s = 1; s <= steps; ++s) {
     barrier();
@@ -50,9 +72,15 @@ void main() {
       const int self = l.y * TILE + l.x;
       const int iW = west.y * TILE + west.x, iE = east.y * TILE + east.x;
       const int iS = south.y * TILE + south.x, iN = north.y * TILE + north.x;
-      const bool atWall = g.x == 0 || g.y == 0 || g.x == n - 1 || g.y == n - 1;
-      uv = waterUpdate(params, su[self], sv[self], vec4(su[iW], su[iE], su[iS], su[iN]),
-                       vec4(sv[iW], sv[iE], sv[iS], sv[iN]), atWall);
+      const vec4 uWESN = vec4(su[iW], su[iE], su[iS], su[iN]);
+      if (solidCell) {
+        const int jW = west0.y * TILE + west0.x, jE = east0.y * TILE + east0.x;
+        const int jS = south0.y * TILE + south0.x, jN = north0.y * TILE + north0.x;
+        uv = vec2(waterGhostHeight(su[self], vec4(su[jW], su[jE], su[jS], su[jN]), nearer), sv[self]);
+      } else {
+        const bool atWall = g.x == 0 || g.y == 0 || g.x == n - 1 || g.y == n - 1;
+        uv = waterUpdate(params, su[self], sv[self], uWESN, vec4(sv[iW], sv[iE], sv[iS], sv[iN]), atWall);
+      }
     }
     barrier();
     if (updating) {

@@ -153,8 +153,9 @@ glm::vec3 sphereCenterAt(const Sphere& sphere, float t);
 inline bool isGlass(const Sphere& sphere) { return sphere.material == "glass"; }
 
 // A box, Lambertian or glass (docs/glass.md), turned about the vertical by
-// `yaw`; it stands still, and the simulated water passes through it (it is
-// drawn over the water inside it).
+// `yaw`; it stands still. One that stands through the water's rest level
+// is solid to the simulated water (sim::solidCellsOf); one wholly under it
+// lets the water pass over it.
 struct Box {
   glm::vec3 center{0.0f};
   glm::vec3 size{0.5f};                // edge lengths along its own x, y, z (metres)

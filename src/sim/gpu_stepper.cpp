@@ -77,35 +77,38 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
   }
   checkGridFits(ctx, initial.n);
   const uint32_t n = params_.n;
-  stepOne_ = gpu::createComputePipeline(ctx, "water_step.comp", sizeof(shader::WaterStepParams));
-  stepTiled_ = gpu::createComputePipeline(ctx, "water_step_tiled.comp", sizeof(shader::WaterStepParams),
-                                          gpu::Specialization().set(0, int32_t(halo)));
+  openWater_ = makeStepPipelines(false);
+  if (!params_.solid.empty()) withSolids_ = makeStepPipelines(true);
   dropPipeline_ = gpu::createComputePipeline(ctx, "water_drop.comp", sizeof(shader::WaterDropParams));
   sphereColumn_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams));
   sphereSpread_ = gpu::createComputePipeline(ctx, "water_sphere.comp", sizeof(shader::WaterSphereParams),
                                              gpu::Specialization().set(0, vk::Bool32(true)));
-  stepActive_ = gpu::createComputePipeline(ctx, "water_step_active.comp", sizeof(shader::WaterTileStepParams));
-  statsPipeline_ = gpu::createComputePipeline(ctx, "water_stats.comp", sizeof(shader::WaterStatsParams));
   const std::string grid = std::to_string(n) + "x" + std::to_string(n) + " water state";
   buffers_[0] = stateBuffer(ctx, n, grid.c_str());
   buffers_[1] = stateBuffer(ctx, n, grid.c_str());
   partials_ =
       gpu::createBuffer(ctx, vk::DeviceSize(groupsPerSide(n)) * groupsPerSide(n) * sizeof(shader::WaterStatsPartial),
                         vk::BufferUsageFlagBits::eStorageBuffer, gpu::MemoryUse::Readback, "water statistics");
+  solidDepths_ = gpu::createBuffer(ctx, vk::DeviceSize(solidDepthWords(n)) * sizeof(uint32_t),
+                                   vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst,
+                                   gpu::MemoryUse::Device, "water solid cells");
+  uploadSolid();
   reset(initial);
   for (int k = 0; k < 2; ++k) {
     gpu::DescriptorWrites step;
-    step.storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]);
+    step.storageBuffer(0, buffers_[k]).storageBuffer(1, buffers_[1 - k]).storageBuffer(4, solidDepths_);
     if (kernel_ == StepKernel::ActiveTiles) {
       // Full-grid runs step with the plain kernel but for their last step (see recordActiveSteps).
       plainSets_[k] = gpu::DescriptorWrites()
                           .storageBuffer(0, buffers_[k])
                           .storageBuffer(1, buffers_[1 - k])
-                          .allocate(stepOne_, descriptors_);
-      stepSets_[k] =
-          step.storageBuffer(2, tiles_.changedAt()).storageBuffer(3, tiles_.list()).allocate(stepActive_, descriptors_);
+                          .storageBuffer(4, solidDepths_)
+                          .allocate(openWater_.one, descriptors_);
+      stepSets_[k] = step.storageBuffer(2, tiles_.changedAt())
+                         .storageBuffer(3, tiles_.list())
+                         .allocate(openWater_.active, descriptors_);
     } else {
-      stepSets_[k] = step.allocate(kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_, descriptors_);
+      stepSets_[k] = step.allocate(kernel_ == StepKernel::Tiled ? openWater_.tiled : openWater_.one, descriptors_);
     }
     dropSets_[k] = gpu::DescriptorWrites()
                        .storageBuffer(0, buffers_[k])
@@ -118,7 +121,8 @@ GpuStepper::GpuStepper(const gpu::Context& ctx, const WaterParams& params, const
     statsSets_[k] = gpu::DescriptorWrites()
                         .storageBuffer(0, buffers_[k])
                         .storageBuffer(1, partials_)
-                        .allocate(statsPipeline_, descriptors_);
+                        .storageBuffer(4, solidDepths_)
+                        .allocate(openWater_.stats, descriptors_);
   }
 }
 
@@ -134,10 +138,32 @@ void GpuStepper::reset(const WaterState& state) {
   tiles_.markAll(0);
 }
 
+GpuStepper::StepPipelines GpuStepper::makeStepPipelines(bool solids) const {
+  const auto spec = [&] { return gpu::Specialization().set(TP_SPEC_WATER_SOLIDS, vk::Bool32(solids)); };
+  return StepPipelines{
+      .one = gpu::createComputePipeline(ctx_, "water_step.comp", sizeof(shader::WaterStepParams), spec()),
+      .tiled = gpu::createComputePipeline(ctx_, "water_step_tiled.comp", sizeof(shader::WaterStepParams),
+                                          spec().set(0, int32_t(halo_))),
+      .active = gpu::createComputePipeline(ctx_, "water_step_active.comp", sizeof(shader::WaterTileStepParams), spec()),
+      .stats = gpu::createComputePipeline(ctx_, "water_stats.comp", sizeof(shader::WaterStatsParams), spec())};
+}
+
+const GpuStepper::StepPipelines& GpuStepper::stepPipelines() const {
+  return params_.solid.empty() ? openWater_ : *withSolids_;
+}
+
+void GpuStepper::uploadSolid() {
+  const std::vector<uint32_t> depths = solidDepths(params_);
+  gpu::uploadToBuffer(ctx_, solidDepths_, depths.data(), depths.size() * sizeof(uint32_t));
+}
+
 void GpuStepper::setParams(const WaterParams& params) {
   if (params.n != params_.n) throw std::logic_error("GpuStepper::setParams: another grid size");
   validate(params);
+  const bool solidChanged = params.solid != params_.solid;
   params_ = params;
+  if (solidChanged) uploadSolid();
+  if (!params_.solid.empty() && !withSolids_) withSolids_ = makeStepPipelines(true);
   tiles_.setBoundary(params.boundary);
   tiles_.markAll(uint32_t(stepIndex_));
 }
@@ -164,7 +190,7 @@ void GpuStepper::recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps,
   const uint32_t inner = kTile - 2 * halo_;
   for (uint64_t done = 0; done < steps;) {
     const uint32_t k = kernel_ == StepKernel::Tiled ? uint32_t(std::min<uint64_t>(halo_, steps - done)) : 1u;
-    const gpu::Pipeline& pipeline = kernel_ == StepKernel::Tiled ? stepTiled_ : stepOne_;
+    const gpu::Pipeline& pipeline = kernel_ == StepKernel::Tiled ? stepPipelines().tiled : stepPipelines().one;
     beforeCompute(cmd);
     gpu::bindPipeline(cmd, pipeline, stepParams(params_, dt, k));
     gpu::bindSet(cmd, pipeline, stepSets_[current_]);
@@ -193,9 +219,10 @@ void GpuStepper::recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t 
     // steps say "unchanged since", which is all the list reads.
     if (full && s + 1 < steps) {
       beforeCompute(cmd);
-      gpu::bindPipeline(cmd, stepOne_, stepParams(params_, dt, 1));
-      gpu::bindSet(cmd, stepOne_, plainSets_[current_]);
-      gpu::dispatchCovering(cmd, stepOne_, params_.n, params_.n);
+      const gpu::Pipeline& one = stepPipelines().one;
+      gpu::bindPipeline(cmd, one, stepParams(params_, dt, 1));
+      gpu::bindSet(cmd, one, plainSets_[current_]);
+      gpu::dispatchCovering(cmd, one, params_.n, params_.n);
       directTiles_ += tiles_.count();
       current_ = 1 - current_;
       ++stepIndex_;
@@ -211,8 +238,9 @@ void GpuStepper::recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t 
                                         .tilesPerSide = tiles_.perSide(),
                                         .fromList = full ? 0u : 1u,
                                         .pad = 0};
-    gpu::bindPipeline(cmd, stepActive_, p);
-    gpu::bindSet(cmd, stepActive_, stepSets_[current_]);
+    const gpu::Pipeline& active = stepPipelines().active;
+    gpu::bindPipeline(cmd, active, p);
+    gpu::bindSet(cmd, active, stepSets_[current_]);
     if (full) {
       gpu::dispatch(cmd, tiles_.perSide(), tiles_.perSide());
       directTiles_ += tiles_.count();
@@ -280,9 +308,10 @@ void GpuStepper::recordStats(const vk::raii::CommandBuffer& cmd, double dt) {
       .dt = float(dt),
       .pad0 = 0.0f,
       .pad1 = {}};
-  gpu::bindPipeline(cmd, statsPipeline_, p);
-  gpu::bindSet(cmd, statsPipeline_, statsSets_[current_]);
-  gpu::dispatchCovering(cmd, statsPipeline_, params_.n, params_.n);
+  const gpu::Pipeline& stats = stepPipelines().stats;
+  gpu::bindPipeline(cmd, stats, p);
+  gpu::bindSet(cmd, stats, statsSets_[current_]);
+  gpu::dispatchCovering(cmd, stats, params_.n, params_.n);
   auto toHost = gpu::bufferBarrier(partials_.handle(), gpu::access::computeWrite, gpu::access::hostRead);
   gpu::pipelineBarrier(cmd, std::span(&toHost, 1));
 }

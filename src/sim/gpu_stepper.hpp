@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 
 #include "gpu/context.hpp"
 #include "gpu/descriptors.hpp"
@@ -81,18 +82,30 @@ class GpuStepper {
  private:
   void beforeCompute(const vk::raii::CommandBuffer& cmd);
   void recordActiveSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt);
+  void uploadSolid();
 
   const gpu::Context& ctx_;
   WaterParams params_;
   StepKernel kernel_;
   uint32_t halo_;
-  gpu::Pipeline stepOne_, stepTiled_, stepActive_, dropPipeline_, statsPipeline_;
+  // The step and statistics pipelines, for open water alone and with solid
+  // cells (TP_SPEC_WATER_SOLIDS; made when a mask first comes). The
+  // descriptor sets, made with the first's layouts, serve both.
+  struct StepPipelines {
+    gpu::Pipeline one, tiled, active, stats;
+  };
+  StepPipelines makeStepPipelines(bool solids) const;
+  const StepPipelines& stepPipelines() const;
+  StepPipelines openWater_;
+  std::optional<StepPipelines> withSolids_;
+  gpu::Pipeline dropPipeline_;
   // A sphere's forcing, each way (SphereForcing): setParams may change it.
   gpu::Pipeline sphereColumn_, sphereSpread_;
   gpu::Buffer buffers_[2];
   // Every kernel keeps the tile flags: drops and spheres mark them whatever steps.
   WaterTiles tiles_;
   gpu::Buffer partials_;
+  gpu::Buffer solidDepths_;  // solidDepths(params_): all zero, and unread, where no cell is solid
   // Descriptor sets made once: stepSets_[k] reads buffers_[k] and writes the
   // other (for the kernel in use), inPlaceSets_[k] for the drop and sphere
   // passes on buffers_[k], statsSets_[k] for the statistics of buffers_[k].

@@ -14,10 +14,17 @@ ReferenceSim::ReferenceSim(const WaterParams& params, const WaterState& initial)
       nextU_(u_.size()),
       nextV_(v_.size()) {
   p_.n = initial.n;
+  depths_ = solidDepths(p_);
 }
 
-double ReferenceSim::heightAt(long i, long j) const { return u_[cellIndex(i, j, p_.n, p_.boundary)]; }
-double ReferenceSim::velocityAt(long i, long j) const { return v_[cellIndex(i, j, p_.n, p_.boundary)]; }
+// A solid cell (WaterParams::solid) holds no water: an open cell `self`
+// sees its own state in its place.
+size_t ReferenceSim::seen(size_t self, long i, long j) const {
+  const size_t k = cellIndex(i, j, p_.n, p_.boundary);
+  return isSolid(p_.solid, k) ? self : k;
+}
+double ReferenceSim::heightAt(size_t self, long i, long j) const { return u_[seen(self, i, j)]; }
+double ReferenceSim::velocityAt(size_t self, long i, long j) const { return v_[seen(self, i, j)]; }
 
 void ReferenceSim::step(double dt) {
   const long n = p_.n;
@@ -32,16 +39,31 @@ void ReferenceSim::step(double dt) {
   for (long j = 0; j < n; ++j) {
     for (long i = 0; i < n; ++i) {
       const size_t k = size_t(j) * n + size_t(i);
-      const double average = 0.25 * (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1));
+      if (const uint32_t depth = solidDepthAt(depths_, k); depth != 0) {
+        // No water: a ghost, the mean of the neighbours one cell nearer the water.
+        double sum = 0.0;
+        int nearer = 0;
+        for (const size_t other : {cellIndex(i - 1, j, p_.n, p_.boundary), cellIndex(i + 1, j, p_.n, p_.boundary),
+                                   cellIndex(i, j - 1, p_.n, p_.boundary), cellIndex(i, j + 1, p_.n, p_.boundary)}) {
+          if (solidDepthAt(depths_, other) + 1 != depth) continue;
+          sum += u_[other];
+          ++nearer;
+        }
+        nextU_[k] = nearer > 0 ? sum / nearer : u_[k];
+        nextV_[k] = v_[k];
+        continue;
+      }
+      const double average =
+          0.25 * (heightAt(k, i - 1, j) + heightAt(k, i + 1, j) + heightAt(k, i, j - 1) + heightAt(k, i, j + 1));
       const double laplacian = 4.0 * (average - u_[k]) / (h * h);
-      const double velocityLaplacianH2 =
-          velocityAt(i - 1, j) + velocityAt(i + 1, j) + velocityAt(i, j - 1) + velocityAt(i, j + 1) - 4.0 * v_[k];
+      const double velocityLaplacianH2 = velocityAt(k, i - 1, j) + velocityAt(k, i + 1, j) + velocityAt(k, i, j - 1) +
+                                         velocityAt(k, i, j + 1) - 4.0 * v_[k];
       const double v = decay * (v_[k] + dt * c2 * laplacian) + p_.gridDamping * dt * velocityLaplacianH2;
       double u = u_[k] + dt * (p_.scheme == Scheme::Explicit ? v_[k] : v);
       if (maxDifference > 0.0) {
         const double own = u_[k];
-        u -= excess(own - heightAt(i - 1, j)) + excess(own - heightAt(i + 1, j)) + excess(own - heightAt(i, j - 1)) +
-             excess(own - heightAt(i, j + 1));
+        u -= excess(own - heightAt(k, i - 1, j)) + excess(own - heightAt(k, i + 1, j)) +
+             excess(own - heightAt(k, i, j - 1)) + excess(own - heightAt(k, i, j + 1));
       }
       const bool atWall = i == 0 || j == 0 || i == n - 1 || j == n - 1;
       double vKept = v;
@@ -68,6 +90,7 @@ WaterStats ReferenceSim::stats(double dt) const {
   for (long j = 0; j < n; ++j) {
     for (long i = 0; i < n; ++i) {
       const size_t k = size_t(j) * n + size_t(i);
+      if (isSolid(p_.solid, k)) continue;  // holds no water
       const double u = u_[k], v = v_[k];
       if (!std::isfinite(u) || !std::isfinite(v)) {
         ++s.nonFinite;
@@ -76,9 +99,10 @@ WaterStats ReferenceSim::stats(double dt) const {
       s.maxAbsU = std::max(s.maxAbsU, std::abs(u));
       s.maxAbsV = std::max(s.maxAbsV, std::abs(v));
       s.volume += u * h * h;
-      const double dE = u - heightAt(i + 1, j), dN = u - heightAt(i, j + 1);
+      const double dE = u - heightAt(k, i + 1, j), dN = u - heightAt(k, i, j + 1);
       const double laplacian =
-          (heightAt(i - 1, j) + heightAt(i + 1, j) + heightAt(i, j - 1) + heightAt(i, j + 1) - 4.0 * u) / (h * h);
+          (heightAt(k, i - 1, j) + heightAt(k, i + 1, j) + heightAt(k, i, j - 1) + heightAt(k, i, j + 1) - 4.0 * u) /
+          (h * h);
       s.energy += (0.5 * v * v + 0.5 * c2 * (dE * dE + dN * dN) / (h * h) + 0.5 * dt * c2 * v * laplacian) * h * h;
     }
   }

@@ -22,10 +22,12 @@ class ReferenceSim {
   const std::vector<double>& v() const { return v_; }
 
  private:
-  double heightAt(long i, long j) const;
-  double velocityAt(long i, long j) const;
+  size_t seen(size_t self, long i, long j) const;
+  double heightAt(size_t self, long i, long j) const;
+  double velocityAt(size_t self, long i, long j) const;
 
   WaterParams p_;
+  std::vector<uint32_t> depths_;  // solidDepths(p_)
   std::vector<double> u_, v_, nextU_, nextV_;
 };
 

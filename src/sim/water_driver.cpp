@@ -131,7 +131,8 @@ void WaterDriver::moveSphere(glm::vec3 from, glm::vec3 to, float radius) {
 void WaterDriver::setDynamics(const scene::Water& water) {
   // Everything that can refuse the change, before any of it is made.
   WaterParams params = waterParams(water);
-  params.spillHeight = stepper_.params().spillHeight;  // the rim stays where it is
+  params.spillHeight = stepper_.params().spillHeight;  // the rim stays where it is, and so do the boxes
+  params.solid = stepper_.params().solid;
   validate(params);
   const uint32_t substeps = waterSubsteps(water);
   // Re-base the clock at the frame the water has reached (a whole number of

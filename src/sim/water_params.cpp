@@ -3,6 +3,9 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "sim/grid_index.hpp"
 
 namespace tp::sim {
 namespace {
@@ -31,7 +34,41 @@ void validate(const WaterParams& p) {
           "grid damping must be >= 0 and finite, got " + fmt(p.gridDamping));
   require(std::isfinite(p.spreadDepthFactor) && p.spreadDepthFactor >= 0.0,
           "spread depth factor must be >= 0 and finite, got " + fmt(p.spreadDepthFactor));
+  require(p.solid.empty() || p.solid.size() == solidWords(p.n),
+          "the solid-cell mask has " + std::to_string(p.solid.size()) + " words, where a grid of " +
+              std::to_string(p.n) + " needs " + std::to_string(solidWords(p.n)));
   require(p.spillHeight > 0.0, "spill height (the rim over the rest level) must be > 0, got " + fmt(p.spillHeight));
+}
+
+std::vector<uint32_t> solidDepths(const WaterParams& p) {
+  const size_t cells = size_t(p.n) * p.n;
+  std::vector<uint32_t> words(solidDepthWords(p.n), 0u);
+  if (p.solid.empty()) return words;
+  // Breadth first from the open cells, a ring of solid cells at a time.
+  std::vector<uint32_t> depth(cells, 0u);
+  std::vector<size_t> ring;
+  for (size_t k = 0; k < cells; ++k) {
+    if (isSolid(p.solid, k)) {
+      depth[k] = 255u;
+    } else {
+      ring.push_back(k);
+    }
+  }
+  for (uint32_t d = 1; d < 255 && !ring.empty(); ++d) {
+    std::vector<size_t> next;
+    for (const size_t k : ring) {
+      const long i = long(k % p.n), j = long(k / p.n);
+      for (const size_t other : {cellIndex(i - 1, j, p.n, p.boundary), cellIndex(i + 1, j, p.n, p.boundary),
+                                 cellIndex(i, j - 1, p.n, p.boundary), cellIndex(i, j + 1, p.n, p.boundary)}) {
+        if (depth[other] != 255u) continue;
+        depth[other] = d;
+        next.push_back(other);
+      }
+    }
+    ring = std::move(next);
+  }
+  for (size_t k = 0; k < cells; ++k) words[k / 4] |= depth[k] << (k % 4 * 8);
+  return words;
 }
 
 double slopeShare(const WaterParams& p) { return p.maxSlope > 0.0 ? kSlopeShare : 0.0; }

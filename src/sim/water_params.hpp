@@ -1,7 +1,9 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace tp::sim {
 
@@ -51,10 +53,34 @@ struct WaterParams {
   // surface's (kSpreadDepthFactor) in scenes; `bench wake` varies it to show
   // how the crest answers a wider bump (docs/water-numerics.md).
   double spreadDepthFactor = kSpreadDepthFactor;
+  // The cells the water cannot enter: objects standing through its surface
+  // (solidCellsOf, sim/water_scene.hpp). One bit a cell: cell k = j n + i is
+  // bit k % 32 of word k / 32. A solid cell keeps its state, and an open
+  // neighbour sees its own height and velocity in its place, as at the
+  // pool's walls, so no water crosses the edge between. Empty: none.
+  std::vector<uint32_t> solid = {};
 
   double h() const { return extent / n; }
   double lambda(double dt) const { return waveSpeed * dt / h(); }
 };
+
+// The words of a solid-cell mask for an n x n grid, and one cell's bit.
+inline size_t solidWords(uint32_t n) { return (size_t(n) * n + 31) / 32; }
+inline bool isSolid(const std::vector<uint32_t>& solid, size_t k) {
+  return !solid.empty() && ((solid[k / 32] >> (k % 32)) & 1u) != 0u;
+}
+inline void markSolid(std::vector<uint32_t>& solid, size_t k) { solid[k / 32] |= 1u << (k % 32); }
+
+// The solid cells as the step reads them (lib/water_solid.glsl): one byte a
+// cell, four a word (cell k is byte k % 4 of word k / 4), 0 for an open
+// cell, else the fewest steps between neighbours (under p.boundary) to an
+// open one, at most 255. A solid cell's ghost height follows its neighbours
+// one nearer the water. All zero where no cell is solid.
+std::vector<uint32_t> solidDepths(const WaterParams& p);
+inline size_t solidDepthWords(uint32_t n) { return (size_t(n) * n + 3) / 4; }
+inline uint32_t solidDepthAt(const std::vector<uint32_t>& depths, size_t k) {
+  return (depths[k / 4] >> (k % 4 * 8)) & 255u;
+}
 
 // Throws with the name and bound of the first impossible parameter.
 void validate(const WaterParams& p);

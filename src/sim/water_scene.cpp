@@ -1,6 +1,9 @@
 #include "sim/water_scene.hpp"
 
+#include <cmath>
+
 #include "gpu/submit.hpp"
+#include "shared/objects.h"
 #include "sim/water_timeline.hpp"
 
 namespace tp::sim {
@@ -16,9 +19,31 @@ WaterParams waterParams(const scene::Water& w) {
                      .sphereForcing = parseSphereForcing(w.sphereForcing)};
 }
 
+std::vector<uint32_t> solidCellsOf(const scene::Scene& s) {
+  const uint32_t n = s.water.grid;
+  const double h = s.water.extent / n;
+  std::vector<uint32_t> solid;
+  for (const auto& box : s.boxes) {
+    const glm::vec3 half = 0.5f * box.size;
+    if (!(box.center.y - half.y < s.water.level && s.water.level < box.center.y + half.y)) continue;
+    if (solid.empty()) solid.assign(solidWords(n), 0u);
+    const float yaw = glm::radians(box.yawDegrees);
+    const glm::vec3 centre = worldToGrid(s.water, box.center);
+    for (uint32_t j = 0; j < n; ++j) {
+      for (uint32_t i = 0; i < n; ++i) {
+        const glm::vec3 local =
+            shader::toBoxFrame(glm::vec3(float((i + 0.5) * h) - centre.x, 0.0f, float((j + 0.5) * h) - centre.z), yaw);
+        if (std::abs(local.x) < half.x && std::abs(local.z) < half.z) markSolid(solid, size_t(j) * n + i);
+      }
+    }
+  }
+  return solid;
+}
+
 WaterParams waterParams(const scene::Scene& s) {
   WaterParams p = waterParams(s.water);
   p.spillHeight = double(s.ground.height) - double(s.water.level);
+  p.solid = solidCellsOf(s);
   return p;
 }
 

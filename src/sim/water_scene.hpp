@@ -32,8 +32,15 @@ void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uin
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
 WaterParams waterParams(const scene::Water& water);
+// The cells under the boxes that stand through the water's rest level: the
+// water cannot enter them (WaterParams::solid). A cell is solid where its
+// centre lies inside the box's footprint. Empty where no box crosses the level.
+// Spheres are not solid: a moving one displaces the water instead, and the
+// viewer can move any of them.
+std::vector<uint32_t> solidCellsOf(const scene::Scene& scene);
 // The same with the pool's rim (the ground's height over the rest level),
-// over which the water along the walls spills: what the renderer steps.
+// over which the water along the walls spills, and the solid cells: what the
+// renderer steps.
 WaterParams waterParams(const scene::Scene& scene);
 
 // `water` with the dynamics of `from`: its wave speed, damping, grid damping, boundary, max

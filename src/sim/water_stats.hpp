@@ -9,7 +9,7 @@ namespace tp::sim {
 struct WaterStats {
   double maxAbsU = 0.0;
   double maxAbsV = 0.0;
-  double volume = 0.0;  // sum of u times h^2
+  double volume = 0.0;  // sum of u times h^2 over the cells that hold water (not the solid ones)
   double energy = 0.0;  // the symplectic scheme's conserved energy, times h^2
   uint64_t nonFinite = 0;
 };
