@@ -5,7 +5,8 @@
 // column's square at the new position, minus that at the old one
 // (shared/sphere_column.h), over the square's area. With kSpread (the
 // scene's water.sphere_forcing) the volume is spread over the surface as the
-// flow around a body lifts it (shared/sphere_spread.h). The wave equation
+// flow around a body lifts it (shared/sphere_spread.h), both positions with
+// the bump of this step's speed. The wave equation
 // acts on the surface, so the water itself (heights minus the sphere's
 // submerged volume) is conserved to round-off. Docs: docs/water-numerics.md.
 // Marks the tiles it changes so that an active-tile step computes them.
@@ -30,10 +31,12 @@ void main() {
     const float length = float(params.n) * params.h;
     const bool wrap = params.wrap != 0u;
     const float before =
-        kSpread ? sphereSpreadVolume(lo, hi, params.oldCenter.xyz, radius, level, length, params.spreadDepth, wrap)
+        kSpread ? sphereSpreadVolume(lo, hi, params.oldCenter.xyz, radius, level, length, params.spreadDepth, wrap,
+                                     params.fast, params.topShare)
                 : sphereColumnVolume(lo, hi, params.oldCenter.xyz, radius, level);
     const float after =
-        kSpread ? sphereSpreadVolume(lo, hi, params.newCenter.xyz, radius, level, length, params.spreadDepth, wrap)
+        kSpread ? sphereSpreadVolume(lo, hi, params.newCenter.xyz, radius, level, length, params.spreadDepth, wrap,
+                                     params.fast, params.topShare)
                 : sphereColumnVolume(lo, hi, params.newCenter.xyz, radius, level);
     if (before != after) {
       const uint index = p.y * params.n + p.x;

@@ -98,7 +98,7 @@ TEST_F(LiveRendererTest, DraggedSphereDisplacesTheWaterItPushesIn) {
                                                      : glm::mix(from, to, float(double(k) / substeps)));
   };
   for (uint32_t k = 0; k < substeps; ++k) {
-    stepper.moveSphere(at(k), at(k + 1), s.spheres[0].radius, s.water.level);
+    stepper.moveSphere(at(k), at(k + 1), s.spheres[0].radius, s.water.level, sim::waterStep(s.water));
     stepper.step(1, sim::waterStep(s.water));
   }
   const sim::WaterState expected = stepper.download();

@@ -85,7 +85,7 @@ TEST_F(SimActiveTiles, MatchesFullGridBitwiseWithDropsAndSpheres) {
           s.step(40, dt);
           s.drop({0.005f, 0.8f}, 0.05f, -0.1f);
           s.step(40, dt);
-          s.moveSphere({0.7f, 0.95f, 0.3f}, {0.72f, 0.93f, 0.3f}, 0.1f, kLevel);
+          s.moveSphere({0.7f, 0.95f, 0.3f}, {0.72f, 0.93f, 0.3f}, 0.1f, kLevel, 0.0);
           s.step(40, dt);
         });
       }
@@ -105,7 +105,7 @@ TEST_F(SimActiveTiles, MatchesFullGridWithDisturbancesRecordedBetweenSteps) {
         s.recordDrop(cmd, {0.995f, 0.995f}, 0.04f, 0.1f);
         for (int k = 0; k < 60; ++k) {
           const float x = 0.2f + 0.004f * float(k);
-          s.recordSphereMove(cmd, {x, 0.97f, 0.5f}, {x + 0.004f, 0.97f, 0.5f}, 0.06f, kLevel);
+          s.recordSphereMove(cmd, {x, 0.97f, 0.5f}, {x + 0.004f, 0.97f, 0.5f}, 0.06f, kLevel, dt);
           s.recordSteps(cmd, 1, dt);
           if (k == 30) s.recordDrop(cmd, {0.6f, 0.1f}, 0.02f, 0.05f);
         }

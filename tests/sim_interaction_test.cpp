@@ -41,14 +41,14 @@ TEST_F(SimInteraction, SphereRaisesTheSurfaceByItsSubmergedVolume) {
   sim::GpuStepper gpu(ctx(), p, sim::flatState(p.n, level), sim::StepKernel::OnePerDispatch);
   const double v0 = volumeOf(gpu.download(), p.h());
   const glm::vec3 above(0.9f, 1.5f, 1.0f), half(0.9f, 1.0f, 1.0f), deep(0.9f, 0.6f, 1.0f);
-  gpu.moveSphere(above, half, radius, level);
+  gpu.moveSphere(above, half, radius, level, 0.0);
   const double halfIn = volumeOf(gpu.download(), p.h()) - v0;
   EXPECT_NEAR(halfIn, sim::sphereCapVolume(radius, half.y, level), 1e-4 * sim::sphereCapVolume(radius, half.y, level));
-  gpu.moveSphere(half, deep, radius, level);
+  gpu.moveSphere(half, deep, radius, level, 0.0);
   const double fullyIn = volumeOf(gpu.download(), p.h()) - v0;
   EXPECT_NEAR(fullyIn, sim::sphereCapVolume(radius, deep.y, level), 1e-4 * sim::sphereCapVolume(radius, deep.y, level));
   // Back out: every column returns to the rest level (to float rounding).
-  gpu.moveSphere(deep, above, radius, level);
+  gpu.moveSphere(deep, above, radius, level, 0.0);
   const auto back = gpu.download();
   for (float u : back.u) ASSERT_NEAR(u, level, 4.0f * std::numeric_limits<float>::epsilon());
 }
@@ -62,7 +62,7 @@ TEST_F(SimInteraction, DropsAndSphereAreSynchronisationClean) {
   gpu::submitAndWait(ctx(), [&](const vk::raii::CommandBuffer& cmd) {
     gpu.recordDrop(cmd, {0.5f, 0.5f}, 0.1f, 0.02f);
     gpu.recordSteps(cmd, 7, dt);
-    gpu.recordSphereMove(cmd, {0.3f, 0.7f, 0.3f}, {0.35f, 0.5f, 0.3f}, 0.1f, 0.5f);
+    gpu.recordSphereMove(cmd, {0.3f, 0.7f, 0.3f}, {0.35f, 0.5f, 0.3f}, 0.1f, 0.5f, dt);
     gpu.recordSteps(cmd, 3, dt);
     gpu.recordStats(cmd, dt);
   });

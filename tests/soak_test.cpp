@@ -69,7 +69,7 @@ long soak(const gpu::Context& ctx, sim::Boundary boundary) {
         ctx,
         [&](const vk::raii::CommandBuffer& cmd) {
           for (uint64_t s = done; s < done + kStepsPerSubmit; ++s) {
-            stepper.recordSphereMove(cmd, sphereAt(s), sphereAt(s + 1), 0.3f, 0.0f);
+            stepper.recordSphereMove(cmd, sphereAt(s), sphereAt(s + 1), 0.3f, 0.0f, dt);
             if (s % kStepsPerDrop == 0) {
               const float x = float((s * 7919) % 397) / 397.0f * 4.0f, z = float((s * 104729) % 389) / 389.0f * 4.0f;
               stepper.recordDrop(cmd, {x, z}, 0.2f, (drops++ % 2 ? 1.0f : -1.0f) * 0.02f);

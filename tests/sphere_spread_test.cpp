@@ -13,6 +13,7 @@
 #include "shared/sphere_column.h"
 #include "shared/sphere_spread.h"
 #include "sim/wake_measures.hpp"
+#include "sim/water_params.hpp"
 #include "sim_support.hpp"
 
 namespace tp::test {
@@ -63,11 +64,16 @@ double midpointBump(glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 c, double sigma, do
   return volume * sum * dx * dz / (2.0 * glm::pi<double>() * sigma * sigma);
 }
 
-double gridVolume(uint32_t n, float length, glm::vec3 c, float radius, float level, bool wrap) {
+// The bump of a sphere that moves slower than the waves (fast 0) or well
+// past them (fast 1).
+double gridVolume(uint32_t n, float length, glm::vec3 c, float radius, float level, bool wrap, float fast = 0.0f) {
   return sumOverCells(n, length, [&](glm::vec2 lo, glm::vec2 hi) {
-    return shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, wrap);
+    return shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, wrap, fast,
+                                      float(sim::kSpreadTopShare));
   });
 }
+
+float slowDeviation(const shader::SubmergedMoments& m) { return std::sqrt(shader::spreadVariance(m, kDepthFactor)); }
 
 }  // namespace
 
@@ -112,12 +118,13 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
   for (const float centreY : {0.0f, -0.8f}) {
     const glm::vec3 c(2.013f, centreY, 1.971f);
     const shader::SubmergedMoments m = shader::submergedMoments(radius, level - centreY + radius);
-    const double sigma = shader::spreadDeviation(m, kDepthFactor);
+    const double sigma = slowDeviation(m);
     double worst = 0.0;
     for (uint32_t j = 20; j < 44; j += 3) {
       for (uint32_t i = 20; i < 44; i += 3) {
         const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
-        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false);
+        const double got =
+            shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false, 0.0f, 0.75f);
         const double want = midpointBump(lo, hi, glm::dvec2(c.x, c.z), sigma, m.volume, 64);
         worst = std::max(worst, std::abs(got - want) / m.volume);
       }
@@ -129,7 +136,8 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
 
 // Over a whole grid the columns hold the submerged volume: in the middle,
 // touching a wall (the part of the bump beyond it mirrored back) and across
-// a wrapped edge. Measured worst relative error: 4.3e-7 (float sums of 512^2 columns).
+// a wrapped edge, slower than the waves and faster. Measured worst relative
+// error: 4.3e-7 (float sums of 512^2 columns).
 TEST(SphereSpread, ColumnsAddUpToTheSubmergedVolume) {
   const float length = 4.0f, level = 0.0f;
   double worst = 0.0;
@@ -138,10 +146,12 @@ TEST(SphereSpread, ColumnsAddUpToTheSubmergedVolume) {
       for (const float centreY : {0.3f, 0.0f, -0.6f}) {
         for (const float x : {2.013f, radius + 0.01f, length - radius - 0.01f}) {
           for (const bool wrap : {false, true}) {
-            const glm::vec3 c(x, centreY * radius / 0.45f, 1.971f);
-            const double exact = sim::sphereCapVolume(radius, c.y, level);
-            const double sum = gridVolume(n, length, c, radius, level, wrap);
-            worst = std::max(worst, std::abs(sum - exact) / exact);
+            for (const float fast : {0.0f, 1.0f}) {
+              const glm::vec3 c(x, centreY * radius / 0.45f, 1.971f);
+              const double exact = sim::sphereCapVolume(radius, c.y, level);
+              const double sum = gridVolume(n, length, c, radius, level, wrap, fast);
+              worst = std::max(worst, std::abs(sum - exact) / exact);
+            }
           }
         }
       }
@@ -182,7 +192,7 @@ TEST(SphereSpread, ABallThroughAWallDisplacesItsPartInside) {
 TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
   const float radius = 0.45f, length = 4.0f;
   const shader::SubmergedMoments m = shader::submergedMoments(radius, radius);
-  const double sigma = shader::spreadDeviation(m, kDepthFactor);
+  const double sigma = slowDeviation(m);
   const double steepest = m.volume / (2.0 * glm::pi<double>() * sigma * sigma) / (sigma * std::sqrt(std::exp(1.0)));
   for (const uint32_t n : {64u, 512u}) {
     const float h = length / float(n);
@@ -190,10 +200,10 @@ TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
       double worstRate = 0.0;
       for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 lo(float(i) * h, 2.0f), hi(float(i + 1) * h, 2.0f + h);
-        const float before =
-            shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor, false);
-        const float after =
-            shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor, false);
+        const float before = shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor,
+                                                        false, 0.0f, 0.75f);
+        const float after = shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length,
+                                                       kDepthFactor, false, 0.0f, 0.75f);
         worstRate = std::max(worstRate, std::abs(double(after) - double(before)) / (step * h * h));
       }
       std::printf("%u cells, step %.0e m: largest height change per metre moved %.4f (the bump's slope %.4f)\n", n,
@@ -204,6 +214,53 @@ TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
       }
     }
   }
+}
+
+// Faster than the waves the bump stands where it is put, so its peak is kept
+// to kSpreadTopShare of the sphere's top over the level: the highest column
+// of a fine grid (each column's mean over its square, just under the
+// Gaussian's peak) against that height, for spheres from half in to mostly
+// out (whose bump is low enough unwidened). Slower than the waves the same bump may stand over the top (the
+// default half-in sphere's by 0.11 m). And the widening fades as the top
+// sinks to the level: just over it, the bump is the slow one.
+TEST(SphereSpread, AFastSphereLiftsItsWaterNoHigherThanItsTop) {
+  const float radius = 0.4f, length = 4.0f, level = 0.0f, share = float(sim::kSpreadTopShare);
+  const uint32_t n = 512;
+  const float h = length / float(n);
+  const auto highest = [&](glm::vec3 c, float fast) {
+    double top = 0.0;
+    for (uint32_t j = 0; j < n; ++j) {
+      for (uint32_t i = 0; i < n; ++i) {
+        const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
+        top = std::max(top, double(shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false,
+                                                              fast, share)) /
+                                (double(h) * h));
+      }
+    }
+    return top;
+  };
+  for (const float centreY : {0.0f, 0.1f, 0.25f}) {  // half in, and more of it out
+    const glm::vec3 c(2.0f, centreY, 2.0f);
+    const double sphereTop = double(centreY + radius - level);
+    const double fast = highest(c, 1.0f), slow = highest(c, 0.0f);
+    std::printf("centre %.2f over the level: top %.3f m, the bump's peak %.4f m fast, %.4f m slow\n", centreY,
+                sphereTop, fast, slow);
+    EXPECT_LE(fast, share * sphereTop);
+    if (slow > share * sphereTop) {
+      EXPECT_GT(fast, 0.99 * share * sphereTop);  // widened no more than it must be
+    } else {
+      EXPECT_EQ(fast, slow);  // low enough as it is
+    }
+  }
+  EXPECT_GT(highest({2.0f, 0.0f, 2.0f}, 0.0f), double(radius));
+
+  const float justUnder = -radius + 1e-4f * radius;  // the top 1e-4 r over the level
+  const shader::SubmergedMoments m = shader::submergedMoments(radius, level - justUnder + radius);
+  const float slowVariance = shader::spreadVariance(m, kDepthFactor);
+  const float fastVariance =
+      shader::fastSpreadVariance(m, slowVariance, radius, justUnder + radius - level, 1.0f, share);
+  std::printf("top 1e-4 r over the level: variance %.6e fast, %.6e slow\n", fastVariance, slowVariance);
+  EXPECT_NEAR(fastVariance, slowVariance, 1e-3 * slowVariance);
 }
 
 }  // namespace tp::test

@@ -44,11 +44,26 @@ TP_INLINE SubmergedMoments submergedMoments(float radius, float depth) {
   return m;
 }
 
-// The bump's deviation: the submerged part's horizontal spread and
-// depthFactor times its mean depth, added as variances.
-TP_INLINE float spreadDeviation(SubmergedMoments m, float depthFactor) {
+// The bump's variance: the submerged part's horizontal spread and
+// depthFactor times its mean depth, added.
+TP_INLINE float spreadVariance(SubmergedMoments m, float depthFactor) {
   const float widening = depthFactor * m.meanDepth;
-  return sqrt(m.variance + widening * widening);
+  return m.variance + widening * widening;
+}
+
+// The same for a sphere moving faster than the waves. The water it lifts
+// cannot run ahead of it and stands where the bump puts it, so the bump is
+// widened until its peak, volume / (2 pi variance), stands at most topShare
+// of the way up to the sphere's top (`top` over the level). `fast` in [0, 1]
+// says how far past the wave speed the sphere moves (0: not at all, and the
+// variance is the one above to the bit). A sphere that barely breaks the
+// surface may be washed over: the widening fades as its top sinks, so that
+// it vanishes, without a jump, as the top goes under.
+TP_INLINE float fastSpreadVariance(SubmergedMoments m, float variance, float radius, float top, float fast,
+                                   float topShare) {
+  if (fast <= 0.0f || top <= 0.0f) return variance;
+  const float capped = m.volume / (2.0f * kPi * topShare * top);
+  return variance + fast * smoothstep(0.0f, radius, top) * max(capped - variance, 0.0f);
 }
 
 // The standard normal's upper tail P(Z > u) for u >= 0 (Abramowitz and
@@ -99,15 +114,17 @@ TP_INLINE float ballShareInside(float c, float radius, float length) {
 // Volume the sphere (centre, radius) displaces into the column over the
 // square [lo, hi] of a pool of `length` per side, the level at `level`:
 // its submerged volume as a bump of variance moments.variance plus
-// (depthFactor * meanDepth)^2. With walls, only the share of the sphere
-// between them displaces water (as with the column forcing, a sphere
-// dragged through a wall leaves the pool's water as it was); the grid that
-// wraps round has none.
+// (depthFactor * meanDepth)^2, widened when `fast` as fastSpreadVariance
+// says. With walls, only the share of the sphere between them displaces
+// water (as with the column forcing, a sphere dragged through a wall leaves
+// the pool's water as it was); the grid that wraps round has none.
 TP_INLINE float sphereSpreadVolume(vec2 lo, vec2 hi, vec3 center, float radius, float level, float length,
-                                   float depthFactor, bool wrap) {
+                                   float depthFactor, bool wrap, float fast, float topShare) {
   const SubmergedMoments m = submergedMoments(radius, level - center.y + radius);
   if (m.volume <= 0.0f) return 0.0f;
-  const float sigma = spreadDeviation(m, depthFactor);
+  const float top = center.y + radius - level;
+  const float sigma =
+      sqrt(fastSpreadVariance(m, spreadVariance(m, depthFactor), radius, top, fast, topShare));
   const float inside =
       wrap ? 1.0f : ballShareInside(center.x, radius, length) * ballShareInside(center.z, radius, length);
   return m.volume * inside * pooledShare(lo.x, hi.x, center.x, sigma, length, wrap) *

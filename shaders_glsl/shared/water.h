@@ -81,7 +81,9 @@ struct WaterSphereParams {
   uint markStep;     // as in WaterDropParams
   uint wrap;         // 1: the grid wraps round (the spread forcing's images)
   float spreadDepth;  // the spread forcing's widening per metre of depth (shared/sphere_spread.h)
-  float pad0, pad1, pad2;
+  float fast;         // the spread forcing above the wave speed: fastSpreadVariance's `fast`
+  float topShare;     // and its `topShare`
+  float pad0;
 };
 
 // Push constants of water_step_active.comp: one step over whole tiles. Tile t

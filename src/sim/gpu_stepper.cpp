@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -280,8 +281,16 @@ void GpuStepper::recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center
 }
 
 void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius,
-                                  float restLevel) {
+                                  float restLevel, double seconds) {
   beforeCompute(cmd);
+  // A move across the water at once is faster than any wave. Round a grid
+  // that wraps, the move across an edge is the short way round.
+  glm::dvec2 move(to.x - from.x, to.z - from.z);
+  if (params_.boundary == Boundary::Wrap) move -= params_.extent * glm::round(move / params_.extent);
+  const double across = glm::length(move);
+  const double froude = across == 0.0   ? 0.0
+                        : seconds > 0.0 ? across / (seconds * params_.waveSpeed)
+                                        : std::numeric_limits<double>::infinity();
   shader::WaterSphereParams p{.oldCenter = glm::vec4(from, radius),
                               .newCenter = glm::vec4(to, restLevel),
                               .n = params_.n,
@@ -289,9 +298,9 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
                               .markStep = uint32_t(stepIndex_),
                               .wrap = params_.boundary == Boundary::Wrap ? 1u : 0u,
                               .spreadDepth = float(params_.spreadDepthFactor),
-                              .pad0 = 0.0f,
-                              .pad1 = 0.0f,
-                              .pad2 = 0.0f};
+                              .fast = float(fastBodyWeight(froude)),
+                              .topShare = float(kSpreadTopShare),
+                              .pad0 = 0.0f};
   const gpu::Pipeline& pipeline = params_.sphereForcing == SphereForcing::Spread ? sphereSpread_ : sphereColumn_;
   gpu::bindPipeline(cmd, pipeline, p);
   gpu::bindSet(cmd, pipeline, sphereSets_[current_]);
@@ -352,9 +361,9 @@ void GpuStepper::drop(glm::vec2 center, float radius, float amplitude) {
       ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordDrop(cmd, center, radius, amplitude); }, "water drop");
 }
 
-void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel) {
+void GpuStepper::moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel, double seconds) {
   gpu::submitAndWait(
-      ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel); },
+      ctx_, [&](const vk::raii::CommandBuffer& cmd) { recordSphereMove(cmd, from, to, radius, restLevel, seconds); },
       "sphere displacement");
 }
 

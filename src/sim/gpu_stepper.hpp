@@ -44,9 +44,11 @@ class GpuStepper {
 
   void recordSteps(const vk::raii::CommandBuffer& cmd, uint64_t steps, double dt);
   void recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude);
-  // Moves a sphere of `radius` from `from` to `to`, displacing water below `restLevel`.
-  void recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius,
-                        float restLevel);
+  // Moves a sphere of `radius` from `from` to `to` over `seconds` (0: at
+  // once), displacing water below `restLevel`. The spread forcing's bump
+  // follows the move's speed across the water (fastBodyWeight).
+  void recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius, float restLevel,
+                        double seconds);
   // Computes the per-workgroup statistics; readStats() after the submission finished.
   void recordStats(const vk::raii::CommandBuffer& cmd, double dt);
   WaterStats readStats() const;
@@ -58,7 +60,7 @@ class GpuStepper {
   void setParams(const WaterParams& params);
   void step(uint64_t steps, double dt);
   void drop(glm::vec2 center, float radius, float amplitude);
-  void moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel);
+  void moveSphere(glm::vec3 from, glm::vec3 to, float radius, float restLevel, double seconds);
   WaterStats stats(double dt);
   WaterState download() const;
 

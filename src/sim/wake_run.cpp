@@ -54,7 +54,7 @@ WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {
         ctx,
         [&](const vk::raii::CommandBuffer& cmd) {
           for (uint64_t s = done; s < end; ++s) {
-            stepper.recordSphereMove(cmd, centreAt(s), centreAt(s + 1), float(c.radius), 0.0f);
+            stepper.recordSphereMove(cmd, centreAt(s), centreAt(s + 1), float(c.radius), 0.0f, dt);
             stepper.recordSteps(cmd, 1, dt);
           }
         },

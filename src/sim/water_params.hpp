@@ -20,6 +20,23 @@ enum class SphereForcing { Column, Spread };
 // half maximum lies at rho = 0.766 d; a Gaussian's lies at 1.177 sigma.
 inline constexpr double kSpreadDepthFactor = 0.766 / 1.177;
 
+// A sphere faster than the waves: the spread forcing's bump stands at most
+// kSpreadTopShare of the way up to the sphere's top (shared/sphere_spread.h,
+// fastSpreadVariance), fully from kFastFroude times the wave speed on, eased
+// in from the wave speed (fastBodyWeight). Below the wave speed the bump is
+// the free surface's. docs/water-numerics.md, "Faster than the wave speed".
+inline constexpr double kSpreadTopShare = 0.75;
+inline constexpr double kFastFroude = 1.5;
+
+// fastSpreadVariance's `fast` for a body moving at `froude` times the wave
+// speed: 0 up to 1, 1 from kFastFroude, a smoothstep between.
+inline double fastBodyWeight(double froude) {
+  const double t = (froude - 1.0) / (kFastFroude - 1.0);
+  if (!(t > 0.0)) return 0.0;
+  if (t >= 1.0) return 1.0;
+  return t * t * (3.0 - 2.0 * t);
+}
+
 // The 2D bound on the Courant number lambda = c dt / h: the checkerboard mode
 // is stable only for lambda <= 1/sqrt(2) (DESIGN.md, "Numerics of the water").
 inline constexpr double kStabilityBound = 0.70710678118654752440;

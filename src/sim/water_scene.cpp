@@ -62,7 +62,7 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
       if (sphere.path.empty()) continue;
       water.recordSphereMove(cmd, worldToGrid(scene.water, scene::sphereCenterAt(sphere, t0)),
                              worldToGrid(scene.water, scene::sphereCenterAt(sphere, t1)), sphere.radius,
-                             scene.water.level);
+                             scene.water.level, dt);
     }
     water.recordSteps(cmd, 1, dt);
   }

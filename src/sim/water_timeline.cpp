@@ -48,12 +48,12 @@ void recordWaterRun(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, con
     const glm::vec3 p = k == 0 ? m.from : k >= to - from ? m.to : glm::mix(m.from, m.to, float(double(k) / pieces));
     return worldToGrid(scene.water, p);
   };
-  const auto recordMoves = [&](uint64_t k, uint64_t k1) {
+  const auto recordMoves = [&](uint64_t k, uint64_t k1, double seconds) {
     for (const SphereMove& m : moves) {
-      stepper.recordSphereMove(cmd, along(m, k), along(m, k1), m.radius, scene.water.level);
+      stepper.recordSphereMove(cmd, along(m, k), along(m, k1), m.radius, scene.water.level, seconds);
     }
   };
-  if (to == from) recordMoves(0, 1);  // no step to divide them over
+  if (to == from) recordMoves(0, 1, 0.0);  // no step to divide them over: at once
   uint64_t at = from;
   // Each run of steps starts at its own time: a moving sphere's path is where
   // it is at that step, as in a run without the drops between. With moves by
@@ -65,7 +65,7 @@ void recordWaterRun(const vk::raii::CommandBuffer& cmd, GpuStepper& stepper, con
       return;
     }
     for (; at < step; ++at) {
-      recordMoves(at - from, at - from + 1);
+      recordMoves(at - from, at - from + 1, waterStep(scene.water));
       recordWaterSteps(cmd, stepper, scene, clock.timeAt(at, scene.water), 1);
     }
   };
