@@ -123,8 +123,8 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
     for (uint32_t j = 20; j < 44; j += 3) {
       for (uint32_t i = 20; i < 44; i += 3) {
         const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
-        const double got =
-            shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false, 0.0f, 0.75f);
+        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false, 0.0f,
+                                                      float(sim::kSpreadTopShare));
         const double want = midpointBump(lo, hi, glm::dvec2(c.x, c.z), sigma, m.volume, 64);
         worst = std::max(worst, std::abs(got - want) / m.volume);
       }
@@ -201,9 +201,9 @@ TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
       for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 lo(float(i) * h, 2.0f), hi(float(i + 1) * h, 2.0f + h);
         const float before = shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor,
-                                                        false, 0.0f, 0.75f);
+                                                        false, 0.0f, float(sim::kSpreadTopShare));
         const float after = shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length,
-                                                       kDepthFactor, false, 0.0f, 0.75f);
+                                                       kDepthFactor, false, 0.0f, float(sim::kSpreadTopShare));
         worstRate = std::max(worstRate, std::abs(double(after) - double(before)) / (step * h * h));
       }
       std::printf("%u cells, step %.0e m: largest height change per metre moved %.4f (the bump's slope %.4f)\n", n,
