@@ -32,11 +32,11 @@ void main() {
     const bool wrap = params.wrap != 0u;
     const float before =
         kSpread ? sphereSpreadVolume(lo, hi, params.oldCenter.xyz, radius, level, length, params.spreadDepth, wrap,
-                                     params.fast, params.topShare)
+                                     params.widening, params.fast, params.topShare)
                 : sphereColumnVolume(lo, hi, params.oldCenter.xyz, radius, level);
     const float after =
         kSpread ? sphereSpreadVolume(lo, hi, params.newCenter.xyz, radius, level, length, params.spreadDepth, wrap,
-                                     params.fast, params.topShare)
+                                     params.widening, params.fast, params.topShare)
                 : sphereColumnVolume(lo, hi, params.newCenter.xyz, radius, level);
     if (before != after) {
       const uint index = p.y * params.n + p.x;

@@ -268,35 +268,42 @@ TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const CsvShape table = csvShape(csv);
   EXPECT_EQ(table.header,
-            "grid,speed_fraction,immersion,forcing,spread_depth_factor,grid_damping,slope_limit,steps,ms_per_step,"
-            "high_share,max_slope,crest_m,trough_m,volume_change_m3,device")
+            "grid,speed_fraction,immersion,forcing,spread_depth_factor,near_speed_widening,grid_damping,slope_limit,"
+            "steps,ms_per_step,high_share,max_slope,crest_m,trough_m,volume_change_m3,device")
       << table.header;
   EXPECT_EQ(table.rows, 2 * 2 * 2);
   EXPECT_NE(r.out.find("submerged"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("spread"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
-  r = runTidepool(
-      "bench wake --sizes 32 --speeds 0.5 --grid-dampings 2 --forcings spread --spread-depth-factors 0.65,4 "
-      "--csv " +
-          csv + " --plot ''",
-      dir);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::vector<std::map<std::string, std::string>> rows = csvRows(csv);
-  ASSERT_EQ(rows.size(), 2u * 2u);
-  EXPECT_EQ(r.out.find("column"), std::string::npos) << r.out;
-  for (size_t k = 0; k < rows.size(); k += 2) {
+  // The spread forcing alone on 32 cells, both immersions: two rows per
+  // compared value, the value's row after the default's.
+  const auto spreadRows = [&](const std::string& options) {
+    const ProcessResult run = runTidepool(
+        "bench wake --sizes 32 --grid-dampings 2 --forcings spread " + options + " --csv " + csv + " --plot ''", dir);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out.find("column"), std::string::npos) << run.out;
+    const std::vector<std::map<std::string, std::string>> rows = csvRows(csv);
+    EXPECT_EQ(rows.size(), 2u * 2u);
+    return rows;
+  };
+  const std::vector<std::map<std::string, std::string>> rows = spreadRows("--speeds 0.5 --spread-depth-factors 0.65,4");
+  for (size_t k = 0; k + 1 < rows.size(); k += 2) {
     EXPECT_EQ(rows[k].at("spread_depth_factor"), "0.65");
     EXPECT_EQ(rows[k + 1].at("spread_depth_factor"), "4");
     EXPECT_LT(std::stod(rows[k + 1].at("crest_m")), std::stod(rows[k].at("crest_m"))) << rows[k].at("immersion");
   }
-  // The slope limiter: once per limit, the steepest slope lower with it and the volume kept.
-  r = runTidepool("bench wake --sizes 32 --speeds 0.9 --grid-dampings 2 --forcings spread --max-slopes 0,0.5 --csv " +
-                      csv + " --plot ''",
-                  dir);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::vector<std::map<std::string, std::string>> limited = csvRows(csv);
-  ASSERT_EQ(limited.size(), 2u * 2u);
-  for (size_t k = 0; k < limited.size(); k += 2) {
+  // The widening near the wave speed: once off and once on, the crest lower with it.
+  const std::vector<std::map<std::string, std::string>> near = spreadRows("--speeds 0.9 --near-speed-widening off,on");
+  for (size_t k = 0; k + 1 < near.size(); k += 2) {
+    EXPECT_EQ(near[k].at("near_speed_widening"), "off");
+    EXPECT_EQ(near[k + 1].at("near_speed_widening"), "on");
+    EXPECT_LT(std::stod(near[k + 1].at("crest_m")), 0.5 * std::stod(near[k].at("crest_m"))) << near[k].at("immersion");
+  }
+  // The slope limiter (on the unwidened bump, whose wake is steep): once per
+  // limit, the steepest slope lower with it and the volume kept.
+  const std::vector<std::map<std::string, std::string>> limited =
+      spreadRows("--speeds 0.9 --near-speed-widening off --max-slopes 0,0.5");
+  for (size_t k = 0; k + 1 < limited.size(); k += 2) {
     EXPECT_EQ(limited[k].at("slope_limit"), "0");
     EXPECT_EQ(limited[k + 1].at("slope_limit"), "0.5");
     EXPECT_LT(std::stod(limited[k + 1].at("max_slope")), std::stod(limited[k].at("max_slope")));
@@ -304,7 +311,8 @@ TEST(BenchCli, WakeBenchmarkWritesItsTableAndRefusesBadInput) {
   }
   ScratchDir bad;
   for (const char* option : {"--sizes 8", "--speeds 0", "--grid-dampings -1", "--sizes 32,x", "--forcings chord",
-                             "--spread-depth-factors -1", "--max-slopes -1", "--wave-speed 0", "--wave-speed x"}) {
+                             "--spread-depth-factors -1", "--max-slopes -1", "--wave-speed 0", "--wave-speed x",
+                             "--near-speed-widening maybe"}) {
     expectCleanFailure(std::string("bench wake ") + option + " --csv " + bad.file("x.csv"), bad, {});
   }
   expectCleanFailure("bench wake --csv " + bad.file("x.txt"), bad, {});

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/constants.hpp>
+#include <utility>
 
 #include "shared/sphere_column.h"
 #include "shared/sphere_spread.h"
@@ -65,10 +66,11 @@ double midpointBump(glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 c, double sigma, do
 }
 
 // The bump of a sphere that moves slower than the waves (fast 0) or well
-// past them (fast 1).
-double gridVolume(uint32_t n, float length, glm::vec3 c, float radius, float level, bool wrap, float fast = 0.0f) {
+// past them (fast 1), its variance times `widening` (near the wave speed).
+double gridVolume(uint32_t n, float length, glm::vec3 c, float radius, float level, bool wrap, float fast = 0.0f,
+                  float widening = 1.0f) {
   return sumOverCells(n, length, [&](glm::vec2 lo, glm::vec2 hi) {
-    return shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, wrap, fast,
+    return shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, wrap, widening, fast,
                                       float(sim::kSpreadTopShare));
   });
 }
@@ -123,7 +125,7 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
     for (uint32_t j = 20; j < 44; j += 3) {
       for (uint32_t i = 20; i < 44; i += 3) {
         const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
-        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false, 0.0f,
+        const double got = shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false, 1.0f, 0.0f,
                                                       float(sim::kSpreadTopShare));
         const double want = midpointBump(lo, hi, glm::dvec2(c.x, c.z), sigma, m.volume, 64);
         worst = std::max(worst, std::abs(got - want) / m.volume);
@@ -136,7 +138,8 @@ TEST(SphereSpread, ColumnsMatchAMidpointRuleOverTheBump) {
 
 // Over a whole grid the columns hold the submerged volume: in the middle,
 // touching a wall (the part of the bump beyond it mirrored back) and across
-// a wrapped edge, slower than the waves and faster. Measured worst relative
+// a wrapped edge, slower than the waves and faster, widened near the wave
+// speed and wider than the pool itself. Measured worst relative
 // error: 4.3e-7 (float sums of 512^2 columns).
 TEST(SphereSpread, ColumnsAddUpToTheSubmergedVolume) {
   const float length = 4.0f, level = 0.0f;
@@ -146,10 +149,14 @@ TEST(SphereSpread, ColumnsAddUpToTheSubmergedVolume) {
       for (const float centreY : {0.3f, 0.0f, -0.6f}) {
         for (const float x : {2.013f, radius + 0.01f, length - radius - 0.01f}) {
           for (const bool wrap : {false, true}) {
-            for (const float fast : {0.0f, 1.0f}) {
+            // Slow, fast, widened near the wave speed as far as it goes, and
+            // wider than the pool (the bump's further images folded in).
+            for (const auto& [fast, widening] :
+                 {std::pair(0.0f, 1.0f), std::pair(1.0f, 1.0f),
+                  std::pair(0.0f, float(sim::wakeWidening(sim::kWakeCapFroude))), std::pair(0.0f, 400.0f)}) {
               const glm::vec3 c(x, centreY * radius / 0.45f, 1.971f);
               const double exact = sim::sphereCapVolume(radius, c.y, level);
-              const double sum = gridVolume(n, length, c, radius, level, wrap, fast);
+              const double sum = gridVolume(n, length, c, radius, level, wrap, fast, widening);
               worst = std::max(worst, std::abs(sum - exact) / exact);
             }
           }
@@ -201,9 +208,9 @@ TEST(SphereSpread, ColumnsChangeSmoothlyAsTheSphereMoves) {
       for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 lo(float(i) * h, 2.0f), hi(float(i + 1) * h, 2.0f + h);
         const float before = shader::sphereSpreadVolume(lo, hi, {2.0f, 0.0f, 2.0f}, radius, 0.0f, length, kDepthFactor,
-                                                        false, 0.0f, float(sim::kSpreadTopShare));
+                                                        false, 1.0f, 0.0f, float(sim::kSpreadTopShare));
         const float after = shader::sphereSpreadVolume(lo, hi, {2.0f + step, 0.0f, 2.0f}, radius, 0.0f, length,
-                                                       kDepthFactor, false, 0.0f, float(sim::kSpreadTopShare));
+                                                       kDepthFactor, false, 1.0f, 0.0f, float(sim::kSpreadTopShare));
         worstRate = std::max(worstRate, std::abs(double(after) - double(before)) / (step * h * h));
       }
       std::printf("%u cells, step %.0e m: largest height change per metre moved %.4f (the bump's slope %.4f)\n", n,
@@ -233,7 +240,7 @@ TEST(SphereSpread, AFastSphereLiftsItsWaterNoHigherThanItsTop) {
       for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 lo(float(i) * h, float(j) * h), hi(float(i + 1) * h, float(j + 1) * h);
         top = std::max(top, double(shader::sphereSpreadVolume(lo, hi, c, radius, level, length, kDepthFactor, false,
-                                                              fast, share)) /
+                                                              1.0f, fast, share)) /
                                 (double(h) * h));
       }
     }

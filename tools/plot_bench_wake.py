@@ -15,12 +15,13 @@ def main(csv_path, png_path):
     measures = [("high_share", "variance share above half Nyquist"), ("max_slope", "steepest slope"),
                 ("crest_m", "highest crest (m)")]
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
-    # One colour per forcing, widening, grid damping and slope limit (older
-    # CSVs have no forcing column: the column forcing; none has a widening for
-    # it; older ones have no slope limit: the limiter off).
+    # One colour per forcing, widening, widening near the wave speed, grid
+    # damping and slope limit (older CSVs have no forcing column: the column
+    # forcing; none has a widening for it; older ones have no slope limit: the
+    # limiter off, and no near-speed widening: off).
     def series_of(r):
-        return (r.get("forcing", "column"), r.get("spread_depth_factor", ""), float(r["grid_damping"]),
-                float(r.get("slope_limit") or 0))
+        return (r.get("forcing", "column"), r.get("spread_depth_factor", ""), r.get("near_speed_widening", ""),
+                float(r["grid_damping"]), float(r.get("slope_limit") or 0))
 
     series = sorted({series_of(r) for r in rows})
     markers = {"half": "o", "submerged": "s"}
@@ -29,13 +30,15 @@ def main(csv_path, png_path):
     ms = [float(r["ms_per_step"]) for r in rows]
     time_axis = "log" if ms and max(ms) > 10 * min(ms) else "linear"
     for ax, (key, label) in zip(axes, measures):
-        for k, (forcing, widening, kappa, limit) in enumerate(series):
+        for k, (forcing, widening, near, kappa, limit) in enumerate(series):
             name = f"{forcing}, widening {widening}" if widening else forcing
+            if near:
+                name += f", near c {near}"
             if limit:
                 name += f", slope limit {limit:g}"
             for immersion, marker in markers.items():
                 picked = [r for r in rows
-                          if series_of(r) == (forcing, widening, kappa, limit) and r["immersion"] == immersion]
+                          if series_of(r) == (forcing, widening, near, kappa, limit) and r["immersion"] == immersion]
                 if not picked:
                     continue
                 ax.scatter([float(r["ms_per_step"]) for r in picked], [float(r[key]) for r in picked],

@@ -90,11 +90,28 @@ TP_INLINE float normalShare(float x0, float x1, float c, float sigma) {
 
 // The same over one axis of a pool of `length`, with the part beyond a wall
 // folded back in: mirrored at the walls (wrap = false), or carried round to
-// the other side (wrap = true). Images beyond the nearest are under 1e-15
-// for any bump narrower than an eighth of the pool.
+// the other side (wrap = true). The centre and its nearest images first;
+// further images only for a bump wide enough to reach the pool from them
+// (one widened near the wave speed), so that a narrow bump's sum is the
+// three terms alone. Every image nearer the pool than 8 sigma is added.
 TP_INLINE float pooledShare(float x0, float x1, float c, float sigma, float length, bool wrap) {
   const float below = wrap ? c + length : -c, above = wrap ? c - length : 2.0f * length - c;
-  return normalShare(x0, x1, c, sigma) + normalShare(x0, x1, below, sigma) + normalShare(x0, x1, above, sigma);
+  float share =
+      normalShare(x0, x1, c, sigma) + normalShare(x0, x1, below, sigma) + normalShare(x0, x1, above, sigma);
+  // The images added at round j lie at least (j - 1) period + length from
+  // the pool, less how far the centre is beyond a wall.
+  const float period = wrap ? length : 2.0f * length;
+  const float outside = max(max(-c, c - length), 0.0f);
+  for (int j = 1; float(j - 1) * period + length - outside < 8.0f * sigma; ++j) {
+    const float shift = float(j) * period;
+    if (wrap) {
+      share += normalShare(x0, x1, c + shift + length, sigma) + normalShare(x0, x1, c - shift - length, sigma);
+    } else {
+      share += normalShare(x0, x1, c + shift, sigma) + normalShare(x0, x1, c - shift, sigma) +
+               normalShare(x0, x1, -c - shift, sigma) + normalShare(x0, x1, 2.0f * length - c + shift, sigma);
+    }
+  }
+  return share;
 }
 
 // The share of a ball's volume below the plane x = t r across it, its
@@ -114,17 +131,19 @@ TP_INLINE float ballShareInside(float c, float radius, float length) {
 // Volume the sphere (centre, radius) displaces into the column over the
 // square [lo, hi] of a pool of `length` per side, the level at `level`:
 // its submerged volume as a bump of variance moments.variance plus
-// (depthFactor * meanDepth)^2, widened when `fast` as fastSpreadVariance
-// says. With walls, only the share of the sphere between them displaces
-// water (as with the column forcing, a sphere dragged through a wall leaves
-// the pool's water as it was); the grid that wraps round has none.
+// (depthFactor * meanDepth)^2, that times `widening` near the wave speed
+// (sim::wakeWidening; 1 slower), and widened when `fast` as
+// fastSpreadVariance says. With walls, only the share of the sphere between
+// them displaces water (as with the column forcing, a sphere dragged through
+// a wall leaves the pool's water as it was); the grid that wraps round has
+// none.
 TP_INLINE float sphereSpreadVolume(vec2 lo, vec2 hi, vec3 center, float radius, float level, float length,
-                                   float depthFactor, bool wrap, float fast, float topShare) {
+                                   float depthFactor, bool wrap, float widening, float fast, float topShare) {
   const SubmergedMoments m = submergedMoments(radius, level - center.y + radius);
   if (m.volume <= 0.0f) return 0.0f;
   const float top = center.y + radius - level;
   const float sigma =
-      sqrt(fastSpreadVariance(m, spreadVariance(m, depthFactor), radius, top, fast, topShare));
+      sqrt(fastSpreadVariance(m, widening * spreadVariance(m, depthFactor), radius, top, fast, topShare));
   const float inside =
       wrap ? 1.0f : ballShareInside(center.x, radius, length) * ballShareInside(center.z, radius, length);
   return m.volume * inside * pooledShare(lo.x, hi.x, center.x, sigma, length, wrap) *

@@ -83,7 +83,7 @@ struct WaterSphereParams {
   float spreadDepth;  // the spread forcing's widening per metre of depth (shared/sphere_spread.h)
   float fast;         // the spread forcing above the wave speed: fastSpreadVariance's `fast`
   float topShare;     // and its `topShare`
-  float pad0;
+  float widening;     // the spread bump's variance factor near the wave speed (sim::wakeWidening)
 };
 
 // Push constants of water_step_active.comp: one step over whole tiles. Tile t

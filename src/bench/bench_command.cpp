@@ -95,6 +95,9 @@ void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
   addListOption(wake, "--spread-depth-factors", o.spreadDepthFactors,
                 "The spread forcing's widening per metre of the body's depth, to compare (the free surface's: 0.65)",
                 inRange(0.0, 100.0));
+  addListOption(wake, "--near-speed-widening", o.nearSpeedWidening,
+                "The spread forcing's bump widened near the wave speed, to compare (on: the scenes')",
+                CLI::IsMember({"on", "off"}));
   addListOption(wake, "--max-slopes", o.maxSlopes,
                 "Slope limits (water.max_slope) to compare; 0: the limiter off, the scenes' default",
                 inRange(0.0, 1e4));

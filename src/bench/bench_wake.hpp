@@ -14,6 +14,8 @@ struct BenchWakeOptions {
   std::vector<std::string> forcings{"column", "spread"};  // the forcing methods compared
   // The spread forcing's widening per metre of depth; the column forcing has none.
   std::vector<double> spreadDepthFactors{sim::kSpreadDepthFactor};
+  // The spread forcing's widening near the wave speed (sim::wakeWidening): "on", "off".
+  std::vector<std::string> nearSpeedWidening{"on"};
   std::vector<double> maxSlopes{0.0};            // the slope limiter (water.max_slope); 0: off
   double waveSpeed = sim::WakeCase{}.waveSpeed;  // c, m/s: the default scene's
   std::string csv = "bench_wake.csv";

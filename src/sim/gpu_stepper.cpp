@@ -300,7 +300,7 @@ void GpuStepper::recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 
                               .spreadDepth = float(params_.spreadDepthFactor),
                               .fast = float(fastBodyWeight(froude)),
                               .topShare = float(kSpreadTopShare),
-                              .pad0 = 0.0f};
+                              .widening = float(params_.widenNearWaveSpeed ? wakeWidening(froude) : 1.0)};
   const gpu::Pipeline& pipeline = params_.sphereForcing == SphereForcing::Spread ? sphereSpread_ : sphereColumn_;
   gpu::bindPipeline(cmd, pipeline, p);
   gpu::bindSet(cmd, pipeline, sphereSets_[current_]);

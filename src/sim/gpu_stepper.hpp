@@ -46,7 +46,8 @@ class GpuStepper {
   void recordDrop(const vk::raii::CommandBuffer& cmd, glm::vec2 center, float radius, float amplitude);
   // Moves a sphere of `radius` from `from` to `to` over `seconds` (0: at
   // once), displacing water below `restLevel`. The spread forcing's bump
-  // follows the move's speed across the water (fastBodyWeight).
+  // follows the move's speed across the water (wakeWidening near the wave
+  // speed, fastBodyWeight above it).
   void recordSphereMove(const vk::raii::CommandBuffer& cmd, glm::vec3 from, glm::vec3 to, float radius, float restLevel,
                         double seconds);
   // Computes the per-workgroup statistics; readStats() after the submission finished.

@@ -23,7 +23,8 @@ WaterParams waterParams(const WakeCase& c) {
           .maxSlope = c.maxSlope,
           .gridDamping = c.gridDamping,
           .sphereForcing = c.forcing,
-          .spreadDepthFactor = c.spreadDepthFactor};
+          .spreadDepthFactor = c.spreadDepthFactor,
+          .widenNearWaveSpeed = c.widenNearWaveSpeed};
 }
 
 WakeResult runWake(const gpu::Context& ctx, const WakeCase& c) {

@@ -21,6 +21,7 @@ struct WakeCase {
   // again (its wake then settles into sim/steady_wake.hpp's).
   Boundary boundary = Boundary::Clamp;
   double spreadDepthFactor = kSpreadDepthFactor;  // the spread forcing's widening per metre of depth
+  bool widenNearWaveSpeed = true;                 // and near the wave speed (wakeWidening)
   double maxSlope = 0.0;                          // the slope limiter (water.max_slope); 0: off
   // The default scene's pool, water and sphere (a 4 m square, c = 0.6 m/s,
   // gamma = 0.3/s, 30 frames/s, a sphere of 0.4 m), the sphere crossing 2.8 m along x.

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -37,6 +38,33 @@ inline double fastBodyWeight(double froude) {
   return t * t * (3.0 - 2.0 * t);
 }
 
+// A sphere near the wave speed. The wave equation's wake over a body at
+// U = F c deepens as the bump's peak times 1 / sqrt(1 - F^2) - 1, without
+// bound as F nears 1. That growth is the non-dispersive equation's: water
+// whose waves disperse, as real water does, has no such speed. So from
+// kWakeFroude on, the spread forcing's bump is widened (its variance times
+// wakeWidening, its volume kept) until its peak times that factor stays at
+// kWakeFroude's, up to kWakeCapFroude; the widening is then held, and eased
+// out above the wave speed as the fast widening comes in.
+// docs/water-numerics.md, "The bump widened near the wave speed".
+inline constexpr double kWakeFroude = 0.5;
+inline constexpr double kWakeCapFroude = 0.95;
+
+// The wave equation's steady deepening of the wake over a round bump's
+// centre at `froude` (< 1), in units of the bump's peak.
+inline double wakeDeepening(double froude) { return 1.0 / std::sqrt(1.0 - froude * froude) - 1.0; }
+
+// The factor on the spread bump's variance for a body moving at `froude`
+// times the wave speed: exactly 1 up to kWakeFroude, then the deepening's
+// growth over kWakeFroude's, held from kWakeCapFroude, and eased back to 1
+// by kFastFroude as fastBodyWeight rises.
+inline double wakeWidening(double froude) {
+  if (!(froude > kWakeFroude)) return 1.0;
+  const double held = wakeDeepening(kWakeCapFroude) / wakeDeepening(kWakeFroude);
+  if (froude < kWakeCapFroude) return wakeDeepening(froude) / wakeDeepening(kWakeFroude);
+  return 1.0 + (held - 1.0) * (1.0 - fastBodyWeight(froude));
+}
+
 // The 2D bound on the Courant number lambda = c dt / h: the checkerboard mode
 // is stable only for lambda <= 1/sqrt(2) (DESIGN.md, "Numerics of the water").
 inline constexpr double kStabilityBound = 0.70710678118654752440;
@@ -70,6 +98,9 @@ struct WaterParams {
   // surface's (kSpreadDepthFactor) in scenes; `bench wake` varies it to show
   // how the crest answers a wider bump (docs/water-numerics.md).
   double spreadDepthFactor = kSpreadDepthFactor;
+  // The spread forcing's bump widened near the wave speed (wakeWidening), as
+  // in scenes; `bench wake` turns it off to show the wake without it.
+  bool widenNearWaveSpeed = true;
   // The cells the water cannot enter: objects standing through its surface
   // (solidCellsOf, sim/water_scene.hpp). One bit a cell: cell k = j n + i is
   // bit k % 32 of word k / 32. A solid cell keeps its state, and an open
