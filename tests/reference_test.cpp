@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "exact_fresnel.hpp"
 #include "gpu_test.hpp"
 #include "reference/image_error.hpp"
 #include "reference/reference_tracer.hpp"
@@ -17,15 +18,6 @@
 
 namespace tp::test {
 namespace {
-
-// Reflectance of unpolarised light going from air into water at incidence
-// cosine cosI, from Fresnel's equations (Born and Wolf, 1.5.2), in double.
-double fresnelFromAir(double cosI, double ior) {
-  const double sinT = std::sqrt(1.0 - cosI * cosI) / ior, cosT = std::sqrt(1.0 - sinT * sinT);
-  const double rs = (cosI - ior * cosT) / (cosI + ior * cosT);
-  const double rp = (cosT - ior * cosI) / (cosT + ior * cosI);
-  return 0.5 * (rs * rs + rp * rp);
-}
 
 // Flat water in a pool whose every surface is black, under a sky of radiance 1
 // in every direction: the light leaving the water towards the camera is the

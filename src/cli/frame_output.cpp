@@ -74,7 +74,7 @@ bool wants(const std::vector<std::string>& aovs, const char* name) {
 
 RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
   const bool ao = wants(o.aovs, "ao") || wants(o.aovs, "ao_raw") || wants(o.aovs, "ao_ref");
-  if (ao && (o.reference || !scene.ao.enabled)) {
+  if (ao && (o.reference || o.modelReference || !scene.ao.enabled)) {
     throw UsageError(
         "--aov ao, ao_raw and ao_ref come from the SSAO passes: not with --reference or --no-ao, "
         "nor with a scene whose ao.enabled is false");

@@ -19,6 +19,7 @@
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
 #include "reference/image_error.hpp"
+#include "reference/path_tracer.hpp"
 #include "reference/reference_ao.hpp"
 #include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
@@ -30,16 +31,33 @@ namespace {
 // --samples with --reference, or its default: 64 rays a pixel.
 uint32_t referenceSamples(const RenderOptions& o) { return o.samples > 0 ? o.samples : 64; }
 
-// The CPU reference of the frame; the water is still simulated on the GPU,
+// The CPU reference of the frame: the path tracer (the truth) or the
+// raster's lighting model traced; the water is still simulated on the GPU,
 // exactly as the renderer simulates it.
 render::RenderedFrame renderReferenceFrame(GpuSession& session, const scene::Scene& scene, const RenderOptions& o) {
   std::optional<sim::WaterState> water;
   if (scene.water.enabled) water = sim::simulateWater(session.context(), scene, o.frame);
-  render::ReferenceOptions options{.samples = referenceSamples(o), .progress = [](double done) {
-                                     std::fprintf(stderr, "reference: %3.0f%%\n", 100.0 * done);
-                                   }};
-  render::RenderedFrame frame =
-      render::renderReference(scene, water ? &*water : nullptr, o.frame, o.width, o.height, options);
+  render::RenderedFrame frame;
+  if (o.modelReference) {
+    render::ReferenceOptions options{.samples = referenceSamples(o), .progress = [](double done) {
+                                       std::fprintf(stderr, "reference: %3.0f%%\n", 100.0 * done);
+                                     }};
+    frame = render::renderReference(scene, water ? &*water : nullptr, o.frame, o.width, o.height, options);
+  } else {
+    render::PathTracerOptions options{.samples = referenceSamples(o),
+                                      .seed = o.seed,
+                                      .timeBudgetSeconds = o.timeBudget,
+                                      .progress = [](uint32_t done, uint32_t total) {
+                                        std::fprintf(stderr, "reference: %3.0f%% (%u of %u samples)\n",
+                                                     100.0 * done / total, done, total);
+                                      }};
+    render::PathTracedFrame traced =
+        render::renderPathTraced(scene, water ? &*water : nullptr, o.frame, o.width, o.height, options);
+    if (traced.samples < options.samples)
+      std::fprintf(stderr, "reference: the time budget of %g s ran out at %u samples of %u\n", o.timeBudget,
+                   traced.samples, options.samples);
+    frame = std::move(traced.frame);
+  }
   if (!o.png.empty()) frame.srgb = render::tonemapToSrgb8(frame.rgba, scene.render.exposure);
   return frame;
 }
@@ -124,15 +142,33 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->type_name("NAME")
       ->capture_default_str()
       ->check(CLI::IsMember(io::exrCompressions()));
-  cmd->add_flag("--reference", o.reference,
-                "Ray-trace the frame on the CPU instead (Embree; exact reflection, refraction, Fresnel and "
-                "glass, the caustics traced from the sun): the ground truth for error figures; slow")
+  CLI::Option* reference =
+      cmd->add_flag("--reference", o.reference,
+                    "Path-trace the frame on the CPU instead (Embree; the rendering equation for the scene's "
+                    "materials: every bounce, glass and water with Fresnel, absorption and scattering, the sun "
+                    "through the waves): the ground truth for error figures; slow")
+          ->excludes(profile)
+          ->excludes(frames);
+  cmd->add_flag("--reference-model", o.modelReference,
+                "Trace the raster's own lighting model on the CPU instead (its sky irradiance and sun, "
+                "exact paths through water and glass): checks the raster's paths, not its light")
       ->excludes(profile)
-      ->excludes(frames);
+      ->excludes(frames)
+      ->excludes(reference);
+  cmd->add_option("--seed", o.seed, "With --reference: the paths' seed; another seed, independent noise (default 0)")
+      ->type_name("N")
+      ->needs(reference);
+  cmd->add_option("--time-budget", o.timeBudget,
+                  "With --reference: stop after the pass of samples that passes this many seconds (at least one "
+                  "pass; default: none)")
+      ->type_name("SECONDS")
+      ->check(CLI::PositiveNumber)
+      ->needs(reference);
   profile->excludes(frames);
   cmd->add_option("--samples", o.samples,
                   "Samples per pixel: N jittered frames of the same moment, averaged (anti-aliasing; the water "
-                  "steps once; AOVs at the pixel centres; default 1), or with --reference N rays (default 64)")
+                  "steps once; AOVs at the pixel centres; default 1), or with --reference or --reference-model N paths "
+                  "(default 64)")
       ->type_name("N")
       ->check(inRange(1u, 65536u));
   return cmd;
@@ -187,7 +223,7 @@ int runRender(const RenderOptions& options) {
   RasterPlan plan = rasterPlan(o, scene);
   GpuSession session(o.validate, o.device);
   render::RenderedFrame frame;
-  if (o.reference) {
+  if (o.reference || o.modelReference) {
     frame = renderReferenceFrame(session, scene, o);
   } else {
     render::Renderer renderer(session.context(), scene, o.width, o.height, plan.renderer);
@@ -202,7 +238,7 @@ int runRender(const RenderOptions& options) {
     frame = renderSamples(renderer, plan.request, rasterSamples(o), o.transparentSky);
   }
   writeFrame(o, scene, frame, o.frame, o.exr, o.png);
-  const std::string device = o.reference ? "the CPU (reference)" : session.context().deviceName();
+  const std::string device = o.reference || o.modelReference ? "the CPU (reference)" : session.context().deviceName();
   if (!o.exr.empty()) {
     std::printf("wrote %s (%ux%u, %s) on %s\n", o.exr.c_str(), frame.width, frame.height,
                 o.floatOutput ? "float" : "half", device.c_str());

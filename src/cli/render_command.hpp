@@ -27,7 +27,10 @@ struct RenderOptions {
   bool profile = false;
   bool noSkip = false;            // record every pass (RendererOptions::skipping off)
   std::vector<std::string> aovs;  // Z, N, P, ao, ao_raw, ao_ref
-  bool reference = false;         // ray-trace on the CPU instead (render/reference_tracer)
+  bool reference = false;         // path-trace on the CPU instead: the truth (reference/path_tracer)
+  bool modelReference = false;    // trace the raster's own lighting model on the CPU (reference/reference_tracer)
+  uint32_t seed = 0;              // the path tracer's
+  double timeBudget = 0.0;        // seconds the path tracer may take (0: no limit)
   uint32_t samples = 0;           // per pixel: jittered frames, or rays with --reference; 0: the default (1, 64)
   std::string frames;             // a range A-B: render each frame to the --out (and --png) pattern
   uint32_t checkpointEvery = 0;   // with frames: save the water every K frames in checkpointDir

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "reference/camera_rays.hpp"
 #include "reference/glossy_quadrature.hpp"
 #include "reference/pixel_rotation.hpp"
 #include "reference/reference_caustics.hpp"
@@ -458,23 +459,14 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
   // Camera rays start in the water when the camera is under the surface.
   const bool cameraInWater = cameraMedium(scene, water).extinction.w > 0.0f;
 
-  RenderedFrame out;
-  out.width = width;
-  out.height = height;
-  out.worldToCamera = uniforms.view;
-  out.worldToNDC = uniforms.viewProjection;
-  const size_t pixels = size_t(width) * height;
-  out.rgba.assign(pixels * 4, 0.0f);
-  out.normal.assign(pixels * 4, 0.0f);
-  out.position.assign(pixels * 4, std::numeric_limits<float>::infinity());
+  RenderedFrame out = emptyTracedFrame(uniforms, width, height);
 
   const glm::vec3 eye = scene.camera.position;
-  // The ray through a point of the image (pixels, top-left origin) from the near plane on.
+  const CameraRays rays(uniforms, eye, width, height);
   auto cameraRay = [&](float px, float py, glm::vec3& origin, glm::vec3& dir) {
-    const glm::vec2 ndc(2.0f * px / float(width) - 1.0f, 2.0f * py / float(height) - 1.0f);
-    const glm::vec4 nearPoint = uniforms.inverseViewProjection * glm::vec4(ndc, 0.0f, 1.0f);
-    origin = glm::vec3(nearPoint) / nearPoint.w;
-    dir = glm::normalize(origin - eye);
+    const CameraRay ray = rays.at(px, py);
+    origin = ray.origin;
+    dir = ray.direction;
   };
   RowProgress progress(height, options.progress);
 #pragma omp parallel for schedule(dynamic, 1)
