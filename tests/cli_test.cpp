@@ -92,6 +92,30 @@ TEST(Cli, ReferenceWritesTheRasterLayoutAndReportsProgress) {
   const std::string out = " --out " + bad.file("x.exr");
   expectCleanFailure("render --reference --samples 0" + out, bad, {});
   expectCleanFailure("render --reference --profile" + out, bad, {});
+  expectUsageError("render --seed 3" + out, bad);                           // the path tracer's alone
+  expectUsageError("render --reference-model --time-budget 5" + out, bad);  // likewise
+  expectUsageError("render --reference --time-budget -1" + out, bad);
+  expectUsageError("render --reference --time-budget soon" + out, bad);
+  expectUsageError("render --reference --reference-model" + out, bad);
+}
+
+TEST(Cli, ReferenceSeedsGiveTheSameBitsOrIndependentNoise) {
+  ScratchDir dir;
+  const std::string base = "render --reference --samples 2 --size 32x18 --set sky.clouds.coverage=0 --out ";
+  auto pixels = [&](const std::string& name, const std::string& extra) {
+    const ProcessResult r = runTidepool(base + dir.file(name) + extra, dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return io::readImage(dir.file(name)).pixels;
+  };
+  const std::vector<float> a = pixels("a.exr", ""), again = pixels("again.exr", " --seed 0"),
+                           other = pixels("other.exr", " --seed 7");
+  EXPECT_EQ(a, again);
+  EXPECT_NE(a, other);
+  // A budget far under one pass's time still renders that pass, and says so.
+  const ProcessResult r =
+      runTidepool("render --reference --samples 64 --size 32x18 --time-budget 0.001 --out " + dir.file("b.exr"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("time budget of 0.001 s ran out at 2 samples of 64"), std::string::npos) << r.err;
 }
 
 TEST(Cli, SameFrameTwiceGivesIdenticalPixels) {
