@@ -219,6 +219,24 @@ void addGlassBench(CLI::App* bench, BenchGlassOptions& o) {
   addGpuOptions(glass, o.validate, o.device);
 }
 
+void addTruthBench(CLI::App* bench, BenchTruthOptions& o) {
+  CLI::App* truth = bench->add_subcommand(
+      "truth", "The raster against the path-traced truth: error per scene and region beside each one's wall time");
+  addListOption(truth, "--scenes", o.scenes, "Scene files to measure, comma-separated; default: the built-in scene",
+                CLI::Validator())
+      ->type_name("PATH,...");
+  addSizeOption(truth, o.resolution);
+  truth->add_option("--frame", o.frame, "Frame number of each scene")->capture_default_str();
+  truth->add_option("--samples", o.samples, "Paths per pixel of the truth")
+      ->capture_default_str()
+      ->check(inRange(1u, 65536u));
+  truth->add_option("--raster-samples", o.rasterSamples, "Jittered frames the raster averages, as render --samples")
+      ->capture_default_str()
+      ->check(inRange(1u, 4096u));
+  addOutputOptions(truth, o.csv, o.plot);
+  addGpuOptions(truth, o.validate, o.device);
+}
+
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
@@ -233,6 +251,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   addPassesBench(bench, o.passes);
   addIblBench(bench, o.ibl);
   addGlassBench(bench, o.glass);
+  addTruthBench(bench, o.truth);
   return bench;
 }
 
@@ -246,6 +265,7 @@ int runBench(CLI::App* bench, const BenchOptions& o) {
   if (bench->get_subcommand("passes")->parsed()) return runBenchPasses(o.passes);
   if (bench->get_subcommand("ibl")->parsed()) return runBenchIbl(o.ibl);
   if (bench->get_subcommand("glass")->parsed()) return runBenchGlass(o.glass);
+  if (bench->get_subcommand("truth")->parsed()) return runBenchTruth(o.truth);
   return 2;
 }
 

@@ -8,6 +8,7 @@
 #include "bench/bench_sim.hpp"
 #include "bench/bench_ssao.hpp"
 #include "bench/bench_tiles.hpp"
+#include "bench/bench_truth.hpp"
 #include "bench/bench_wake.hpp"
 #include "bench/bench_water.hpp"
 
@@ -22,10 +23,11 @@ struct BenchOptions {
   BenchPassesOptions passes;
   BenchIblOptions ibl;
   BenchGlassOptions glass;
+  BenchTruthOptions truth;
   BenchWakeOptions wake;
 };
 
-// Adds `tidepool bench` with its subcommands (sim, tiles, wake, water, ssao, frame, passes, ibl, glass).
+// Adds `tidepool bench` with its subcommands (sim, tiles, wake, water, ssao, frame, passes, ibl, glass, truth).
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(CLI::App* bench, const BenchOptions& options);
 
