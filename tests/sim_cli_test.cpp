@@ -366,4 +366,23 @@ TEST(BenchCli, IblBenchmarkWritesItsTableAndRefusesBadInput) {
   expectCleanFailure("bench ibl --csv " + bad.file("x.csv") + " --glossy-csv /nonexistent/dir/g.csv", bad, {});
 }
 
+// The raster against the path-traced truth, per scene and region.
+TEST(BenchCli, TruthBenchmarkWritesItsTableAndRefusesBadInput) {
+  ScratchDir dir;
+  const std::string csv = dir.file("truth.csv");
+  const std::string low = std::string(TIDEPOOL_SOURCE_DIR) + "/scenes/low_sun.json";
+  ProcessResult r = runTidepool("bench truth --validate --size 16x9 --samples 2 --raster-samples 1 --scenes default," +
+                                    low + " --csv " + csv + " --plot ''",
+                                dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const CsvShape table = csvShape(csv);
+  EXPECT_EQ(table.header.rfind("scene,raster_s,truth_s,truth_noise,rmse,max_error,rmse_sky,pixels_sky,", 0), 0u)
+      << table.header;
+  EXPECT_EQ(table.rows, 2);
+  ScratchDir bad;
+  expectCleanFailure("bench truth --scenes nowhere.json --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench truth --samples 0 --csv " + bad.file("x.csv"), bad, {});
+  expectCleanFailure("bench truth --size 4x4 --csv " + bad.file("x.csv"), bad, {});
+}
+
 }  // namespace tp::test

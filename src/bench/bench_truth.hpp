@@ -20,7 +20,8 @@ struct BenchTruthOptions {
 
 // `tidepool bench truth`: each scene rendered by the raster (its samples
 // averaged, as `render --samples` draws) and path-traced on the CPU (the
-// truth, reference/path_tracer), with each one's wall time and the raster's
+// truth, reference/path_tracer: the mean of two seeds, their difference
+// its noise), with each one's wall time and the raster's
 // tonemapped error over the frame and over the regions whose light differs:
 // the pool (its water, floor and walls), the objects, the rest of the
 // ground. A table, CSV and a plot.
