@@ -163,10 +163,14 @@ void main() {
       // The flat water: its reflection and its refraction.
       const FlatWaterSplit split = flatWaterSplit(ray.dir, ray.water);
       const float reflectance = split.reflectance;
+      // Radiance crossing scales by the squared ratio of the indices: the
+      // air's light seen from the water n^2, the water's from the air 1 / n^2.
+      const float gain = ray.water ? pool.water.y * pool.water.y : 1.0 / (pool.water.y * pool.water.y);
       if (!room) {  // the part going into the air (none past the critical angle)
         const bool intoAir = !ray.water || reflectance < 1.0;
         if (intoAir)
-          radiance += weight * (ray.water ? (1.0 - reflectance) * sky(split.refracted) : reflectance * sky(split.reflected));
+          radiance += weight * (ray.water ? (1.0 - reflectance) * gain * sky(split.refracted)
+                                          : reflectance * sky(split.reflected));
         continue;
       }
       // The footprint carried on through the plane (Igehy 1999).
@@ -174,7 +178,7 @@ void main() {
       const RayDifferential atWater = transferredDifferential(ray.diff, ray.dir, distance, facing);
       const float eta = ray.water ? pool.water.y : 1.0 / pool.water.y;
       if (reflectance < 1.0)
-        rays[count++] = GlassRay(met, split.refracted, weight * (1.0 - reflectance), !ray.water, kSkipNoSphere,
+        rays[count++] = GlassRay(met, split.refracted, weight * (1.0 - reflectance) * gain, !ray.water, kSkipNoSphere,
                                  refractedDifferential(atWater, ray.dir, split.refracted, facing, eta));
       rays[count++] = GlassRay(met, split.reflected, weight * reflectance, ray.water, kSkipNoSphere,
                                reflectedDifferential(atWater, facing));

@@ -19,8 +19,9 @@ void main() {
   if (dot(t, t) > 0.0 && t.y < 0.0) {
     const ivec2 texel = ivec2(apparentDepthTexel(pool, frame, worldPosition, t));
     const float distance = apparentDepthDistance(pool, worldPosition, t);
-    transmitted = texelFetch(underwater, texel, 0).rgb * exp(-surface.extinction.rgb * distance) +
-                  inScatter(worldPosition, t, distance);
+    transmitted = (texelFetch(underwater, texel, 0).rgb * exp(-surface.extinction.rgb * distance) +
+                   inScatter(worldPosition, t, distance)) /
+                  waterRadianceGain();
   }
   color = vec4(mix(transmitted, reflected, waterFresnel(-dot(v.view, v.normal))), 1.0);
 }

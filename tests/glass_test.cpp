@@ -639,7 +639,7 @@ TEST_F(GlassTest, GlassBoxShowsInTheWatersReflectionsAndRefractions) {
                  .yawDegrees = 25.0f,
                  .material = "glass",
                  .ior = 1.5f}};
-  over.camera.position = {0.3f, 0.2f, 3.2f};
+  over.camera.position = {0.3f, 0.3f, 3.2f};
   over.camera.target = {0.0f, -0.1f, 0.0f};
   under.boxes = {{.center = {0.0f, base.water.level - 0.55f, 0.3f},
                   .size = {0.8f, 0.5f, 0.7f},

@@ -230,7 +230,7 @@ vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
       const FlatWaterSplit split = flatWaterSplit(r, false);
       const vec3 up = vec3(0.0, 1.0, 0.0);
       sum = split.reflectance * sky(split.reflected);
-      weight = vec3(1.0 - split.reflectance);
+      weight = vec3(1.0 - split.reflectance) / (pool.water.y * pool.water.y);  // into the water: 1 / n^2
       rd = refractedDifferential(transferredDifferential(rd, r, end.distance, up), r, split.refracted, up,
                                  1.0 / pool.water.y);
       p += end.distance * r;
@@ -241,7 +241,7 @@ vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
     const float up = toSurfaceFromBelow(p, r);
     const FlatWaterSplit split = flatWaterSplit(r, true);
     if (up > 0.0 && dot(split.refracted, split.refracted) > 0.0) {  // out into the sky
-      weight = (1.0 - split.reflectance) * exp(-pool.extinction.rgb * up);
+      weight = (1.0 - split.reflectance) * exp(-pool.extinction.rgb * up) * (pool.water.y * pool.water.y);  // out: n^2
       r = split.refracted;
       water = false;
     } else if (up > 0.0) {  // reflected whole

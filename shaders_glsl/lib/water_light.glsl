@@ -16,6 +16,12 @@ float waterFresnel(float cosAir) {
   return f0 + (1.0 - f0) * pow(1.0 - clamp(cosAir, 0.0, 1.0), 5.0);
 }
 
+// Radiance crossing the surface is scaled by the squared ratio of the
+// indices (L / n^2 is conserved along a ray): light from under the water
+// seen from the air keeps 1 / n^2 of it (besides Fresnel's loss), light from
+// the air seen from under the water gains n^2 (Snell's window is brighter).
+float waterRadianceGain() { return surface.extinction.w * surface.extinction.w; }
+
 // The light leaving the surface at `position` towards the camera, seen as
 // `v` says; rd the differentials of the refracted ray (of position and
 // normalize(v.refracted)).
@@ -23,7 +29,7 @@ vec3 seenFromAbove(vec3 position, ViewFromAbove v, RayDifferential rd) {
   const vec3 reflected = radianceAbove(position, reflect(v.view, v.normal));
   vec3 transmitted = vec3(0.0);
   const vec3 t = v.refracted;
-  if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(position, normalize(t), rd);
+  if (dot(t, t) > 0.0 && t.y < 0.0) transmitted = radianceBelow(position, normalize(t), rd) / waterRadianceGain();
   return mix(transmitted, reflected, waterFresnel(-dot(v.view, v.normal)));
 }
 

@@ -19,7 +19,7 @@ vec4 shadeFromBelow(vec3 view, vec3 n) {
   const vec3 reflected = radianceBelow(worldPosition, r, rayDifferential(worldPosition, r));
   const vec3 t = refract(view, n, surface.extinction.w);
   const bool total = dot(t, t) == 0.0;
-  const vec3 transmitted = total ? vec3(0.0) : radianceAbove(worldPosition, t);
+  const vec3 transmitted = total ? vec3(0.0) : radianceAbove(worldPosition, t) * waterRadianceGain();
   const float fresnel = total ? 1.0 : waterFresnel(-dot(t, n));
   const float toCamera = distance(frame.cameraPosition.xyz, worldPosition);
   const vec3 camera = frame.cameraPosition.xyz;

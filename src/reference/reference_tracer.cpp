@@ -408,7 +408,8 @@ class Tracer {
     glm::vec3 result = reflectance * follow(glm::normalize(dir + 2.0f * cosI * n));
     if (reflectance < 1.0f) {
       const float eta = n1 / n2;
-      result += (1.0f - reflectance) * follow(glm::normalize(eta * dir + (eta * cosI - cosT) * n));
+      // Radiance crossing scales by (n1 / n2)^2, as the raster's surface scales it.
+      result += (1.0f - reflectance) * eta * eta * follow(glm::normalize(eta * dir + (eta * cosI - cosT) * n));
     }
     return result;
   }
