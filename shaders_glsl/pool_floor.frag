@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The tiled pool floor, Lambertian (shared/shading.h), the sun through the
-// waves from the caustics texture, through the water when the camera is under it.
+// The tiled pool floor, Lambertian (shared/shading.h), lit through the water
+// (the sun through the waves from the caustics texture), seen through the
+// water when the camera is under it.
 #include "shared/shading.h"
 #include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
@@ -23,7 +24,7 @@ void main() {
       causticsRatio(caustics, pool, frame.sunDirection.xyz, worldPosition) * frameSunShare(worldPosition);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 albedo = groundAlbedo(pool.tiles, worldPosition.xz, footprint);
-  color = vec4(lambertRadiance(frame, albedo, n, caustic) * toCamera +
+  color = vec4(albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
   writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, 1.0) * toCamera);

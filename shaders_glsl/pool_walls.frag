@@ -28,7 +28,7 @@ void main() {
   // Under the water the sun comes through the waves (the caustics texture).
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   const vec3 albedo = poolWallAlbedo(pool, poolWallCoordinates(pool, worldPosition, n), footprint);
-  const vec3 diffuse = lambertRadiance(frame, albedo, n, frameSunShare(worldPosition) * caustic);
+  const vec3 diffuse = albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);

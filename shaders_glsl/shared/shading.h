@@ -9,6 +9,7 @@
 #include "shared/constants.h"
 #include "shared/equirect.h"
 #include "shared/frame.h"
+#include "shared/glass.h"
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/pool.h"
@@ -45,12 +46,46 @@ TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
   return normalize(vec3(-dx, 2.0f * spacing, -dz));
 }
 
-// `caustic`: the sun's irradiance through the waves relative to flat water
-// (the caustics texture; 1 where caustics are off), times its disc's share
-// in view (sunVisibility).
+// Whether p lies in the pool under the water's rest level: lit through
+// the surface, as flat water at that level passes the light.
+TP_INLINE bool underRestLevel(PoolParams pool, vec3 p) { return pool.water.w > 0.0f && p.y < pool.water.x; }
+
+// The sun's irradiance on normal n at p under flat water: its disc's light
+// refracted at the rest level, Fresnel's transmission taken, its solid angle
+// compressed by cos(air) / cos(water) (the radiance's n^2 and the solid
+// angle's 1 / n^2 cancel), absorbed over the slant path down.
+TP_INLINE vec3 sunThroughFlatWater(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n) {
+  vec3 toSun = vec3(frame.sunDirection);
+  if (toSun.y <= 0.0f) return vec3(0.0f);
+  float ior = pool.water.y;
+  vec3 travel = refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / ior);
+  float cosWater = -travel.y;
+  float depth = max(pool.water.x - p.y, 0.0f);
+  float transmitted = 1.0f - fresnelDielectric(toSun.y, 1.0f, ior);
+  return vec3(frame.sunIrradiance) * (transmitted * toSun.y / cosWater * max(dot(n, -travel), 0.0f)) *
+         exp(-vec3(pool.extinction) * (depth / cosWater));
+}
+
+// The sun's and the sky's irradiance on a surface of the pool at p with
+// normal n, `sunShare` of the sun's: under the rest level the sun comes
+// through the water. The sky's is the open sky's everywhere (SH9): Snell's
+// window alone, without the light the pool sends back down off the
+// surface's underside and its walls, measured further from the path-traced
+// truth than this (docs/accuracy.md).
+TP_INLINE vec3 poolIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n, float sunShare) {
+  vec3 sun = underRestLevel(pool, p) ? sunThroughFlatWater(pool, frame, p, n)
+                                     : vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f);
+  return sunShare * sun + sh9Irradiance(frame.skySh, n);
+}
+
+// The floor, lit through the water (poolIrradiance). `caustic`: the sun's
+// irradiance through the waves relative to flat water (the caustics
+// texture; 1 where caustics are off), times its disc's share in view
+// (sunVisibility).
 TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
                                  float caustic) {
-  return groundRadiance(pool.tiles, frame, vec2(position.x, position.z), footprint, normal, caustic);
+  return groundAlbedo(pool.tiles, vec2(position.x, position.z), footprint) / kPi *
+         poolIrradiance(pool, frame, position, normal, caustic);
 }
 
 // The direction the caustics texture's light lines run in: the sun's,
@@ -77,14 +112,14 @@ TP_INLINE vec2 causticsUv(PoolParams pool, vec3 toSun, vec3 p) {
 }
 
 // The walls see the sky above the horizon on their side (half of it, for a
-// uniform sky); the pool's own rim is not counted. `footprint`: the pixel's
+// uniform sky) above the water, and through it below (poolIrradiance); the
+// pool's own rim is not counted. `footprint`: the pixel's
 // on the wall, in metres along and down it (0 point-samples the bricks).
 // `sunShare`: the share of the sun's disc in view (sunVisibility).
 TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
                                 float sunShare) {
-  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(normal, vec3(frame.sunDirection)), 0.0f) +
-                    sh9Irradiance(frame.skySh, normal);
-  return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi * irradiance;
+  return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi *
+         poolIrradiance(pool, frame, position, normal, sunShare);
 }
 
 // Distances along origin + s dir from inside the pool's square to the wall
