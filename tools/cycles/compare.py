@@ -144,6 +144,13 @@ class Comparison:
         self.reference_frames = frames
         self.reference_mean = sum(frames) / len(frames)
 
+    def model(self):
+        """`render --reference-model`: the raster's lighting model traced on the CPU (the old reference)."""
+        self.times["model"] = self.tidepool("render", "--reference-model", "--samples", str(self.args.samples_ref),
+                                            "--size", self.size, "--float", "--out", self.path("model.exr"),
+                                            log="model.log")
+        self.model_frame = read_exr(self.path("model.exr"))
+
     def raster(self):
         extra = ["--samples", str(self.args.samples_raster)] if self.args.samples_raster > 1 else []
         self.times["raster"] = self.tidepool("render", "--size", self.size, "--float", *extra,
@@ -167,6 +174,9 @@ class Comparison:
         self.export()
         self.raster()  # first: its EXR carries the camera Cycles takes
         self.reference()
+        self.model_frame = None
+        if self.args.model:
+            self.model()
         frames = []
         for seed in CYCLES_SEEDS:
             frame, wall, render = self.cycles(self.args.samples_cycles, seed, f"cycles_s{seed}.exr")
@@ -202,6 +212,7 @@ class Comparison:
             "cycles_noise_one_seed": between / math.sqrt(2.0),
             "cycles_noise_mean": between / 2.0,
             "reference_noise_mean": None,
+            "model_vs_cycles": None if self.model_frame is None else self.err(self.model_frame, self.cycles_mean),
             "times": self.times,
             "ladder": self.ladder,
         }
@@ -223,6 +234,8 @@ def print_figures(f, out=sys.stdout):
     w(f"  {'reference vs Cycles':34s} {f['reference_vs_cycles']:.4f}")
     w(f"  {'raster vs Cycles':34s} {f['raster_vs_cycles']:.4f}")
     w(f"  {'reference vs raster':34s} {f['reference_vs_raster']:.4f}")
+    if f.get("model_vs_cycles") is not None:
+        w(f"  {'reference-model vs Cycles':34s} {f['model_vs_cycles']:.4f}")
     w(f"  {'Cycles noise, one seed':34s} {f['cycles_noise_one_seed']:.4f}")
     w(f"  {'Cycles noise, mean of two seeds':34s} {f['cycles_noise_mean']:.4f}")
     w(f"  {'reference noise, mean of two seeds':34s} "
@@ -230,7 +243,8 @@ def print_figures(f, out=sys.stdout):
     t = f["times"]
     cyc = t["cycles"]
     w(f"  time: export {t['export']:.1f} s, raster {t['raster']:.1f} s, reference "
-      + " + ".join(f"{x:.1f}" for x in t["reference"]) + " s, Cycles "
+      + " + ".join(f"{x:.1f}" for x in t["reference"]) + " s, "
+      + (f"reference-model {t['model']:.1f} s, " if "model" in t else "") + "Cycles "
       + " + ".join(f"{a:.1f} ({b:.1f} rendering)" for a, b in cyc) + " s")
     if f["ladder"]:
         w(f"  {'run time against error':34s} {'wall s':>8s} {'render s':>9s} {'RMSE vs Cycles mean':>20s}")
@@ -259,6 +273,8 @@ def parse_args(argv=None):
     p.add_argument("--blender", default=shutil.which("blender") or "blender")
     p.add_argument("--ladder", action=argparse.BooleanOptionalAction, default=True,
                    help="Cycles at 1, 2, 4, ... samples against its converged frame (default on)")
+    p.add_argument("--model", action="store_true",
+                   help="also `render --reference-model` (the raster's lighting model traced) against Cycles")
     p.add_argument("--json", help="also write the figures here")
     return p.parse_args(argv)
 

@@ -25,8 +25,7 @@ import time
 import numpy as np
 
 # Debian's Blender 3.4 glTF importer still spells numpy's removed alias np.bool.
-if not hasattr(np, "bool") or np.bool is not bool:
-    np.bool = bool
+np.bool = bool
 
 import bmesh  # noqa: E402
 import bpy  # noqa: E402
@@ -305,6 +304,43 @@ def close_water(obj, scene_data):
 SPHERE_SEGMENTS = 512  # around; half as many rings: a sagitta of 1.9e-5 of the radius
 
 
+def uv_sphere(name, radius, segments, rings):
+    """A UV sphere about the origin, smooth, its normals exactly radial (numpy: bmesh's is slow)."""
+    theta = np.arange(1, rings) * math.pi / rings  # from the north pole (+z)
+    phi = np.arange(segments) * 2.0 * math.pi / segments
+    st, ct = np.sin(theta)[:, None], np.cos(theta)[:, None]
+    ring = np.stack([st * np.cos(phi), st * np.sin(phi), np.broadcast_to(ct, (rings - 1, segments))], -1)
+    unit = np.concatenate([[[0.0, 0.0, 1.0]], ring.reshape(-1, 3), [[0.0, 0.0, -1.0]]])
+    north, south = 0, len(unit) - 1
+    idx = lambda j, i: 1 + j * segments + (i % segments)  # noqa: E731
+    i = np.arange(segments)
+    # Counter-clockwise seen from outside (phi grows to the right of a viewer outside, +z up).
+    faces = [np.stack([np.full(segments, north), idx(0, i), idx(0, i + 1), np.full(segments, -1)], -1)]
+    for j in range(rings - 2):
+        faces.append(np.stack([idx(j, i), idx(j + 1, i), idx(j + 1, i + 1), idx(j, i + 1)], -1))
+    faces.append(np.stack([idx(rings - 2, i), np.full(segments, south), idx(rings - 2, i + 1),
+                           np.full(segments, -1)], -1))
+    faces = np.concatenate(faces)
+    sizes = np.where(faces[:, 3] < 0, 3, 4)
+    loops = faces.reshape(-1)[faces.reshape(-1) >= 0]
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(unit))
+    mesh.vertices.foreach_set("co", (unit * radius).astype(np.float32).reshape(-1))
+    mesh.loops.add(len(loops))
+    mesh.loops.foreach_set("vertex_index", loops.astype(np.int32))
+    mesh.polygons.add(len(faces))
+    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+    mesh.polygons.foreach_set("loop_start", starts.astype(np.int32))
+    mesh.polygons.foreach_set("loop_total", sizes.astype(np.int32))
+    mesh.polygons.foreach_set("use_smooth", np.ones(len(faces), dtype=bool))
+    mesh.update(calc_edges=True)
+    mesh.validate()
+    mesh.use_auto_smooth = True
+    mesh.auto_smooth_angle = math.pi
+    mesh.normals_split_custom_set_from_vertices([tuple(n) for n in unit])
+    return mesh
+
+
 def refine_sphere(obj, item):
     """The exported sphere's tessellation replaced by a fine one on the same sphere, with radial
     normals: the reference casts spheres exactly. Centre and radius from the exported vertices
@@ -317,13 +353,7 @@ def refine_sphere(obj, item):
     want = float(item.get("radius", 0.5))
     if abs(radius - want) > 1e-4 * max(want, 1.0):
         raise SystemExit(f"render_cycles: {obj.name}'s vertices make a radius {radius}, the scene says {want}")
-    bm = bmesh.new()
-    bmesh.ops.create_uvsphere(bm, u_segments=SPHERE_SEGMENTS, v_segments=SPHERE_SEGMENTS // 2, radius=want)
-    mesh = bpy.data.meshes.new(obj.name + "_exact")
-    bm.to_mesh(mesh)
-    bm.free()
-    for poly in mesh.polygons:
-        poly.use_smooth = True  # a UV sphere's vertex normals are radial
+    mesh = uv_sphere(obj.name + "_exact", want, SPHERE_SEGMENTS, SPHERE_SEGMENTS // 2)
     exact = bpy.data.objects.new(obj.name, mesh)
     exact.location = centre
     name = obj.name
