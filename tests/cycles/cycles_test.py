@@ -22,7 +22,11 @@ BOUND = 0.01  # reference vs Cycles, tonemapped RMSE
 NOISE_FACTOR = 3.0
 FLOOR = 0.002  # what two converged renderers of the same scene still differ by (docs/testing.md)
 RASTER_BOUND = 0.02
-SAMPLES_CYCLES = 256  # per seed, two seeds
+SAMPLES_CYCLES = 512  # per seed, two seeds, for a scene SAMPLES_CYCLES_OF leaves out
+# Cycles' samples per scene: each scene's noise (mean of two seeds) under about 0.005, the whole
+# test's first run (nothing cached) about ten minutes on two cores (docs/testing.md).
+SAMPLES_CYCLES_OF = {"lambert_sphere": 256, "glossy_sphere": 256, "glass_sphere": 512,
+                     "flat_pool": 768, "half_submerged": 768, "deep_pool": 1024}
 SAMPLES_REF = 256
 
 
@@ -37,15 +41,18 @@ def raster_passing():
 
 
 def main():
+    sys.stdout.reconfigure(line_buffering=True)  # ctest's log shows each scene as it ends
     p = argparse.ArgumentParser()
     p.add_argument("--tidepool", required=True)
     p.add_argument("--blender", default="blender")
     p.add_argument("--outdir", required=True)
-    p.add_argument("--samples-cycles", type=int, default=SAMPLES_CYCLES)
+    p.add_argument("--samples-cycles", type=int, help="per seed, for every scene (default: SAMPLES_CYCLES_OF)")
     p.add_argument("--samples-ref", type=int, default=SAMPLES_REF)
     p.add_argument("--threads", type=int, default=0)
+    p.add_argument("--cycles-cache", help="Cycles' frames kept between runs (default: OUTDIR/cycles-cache)")
     p.add_argument("scenes", nargs="*", help="scene files (default: every tests/cycles/*.json)")
     args = p.parse_args()
+    args.cycles_cache = args.cycles_cache or os.path.join(args.outdir, "cycles-cache")
     scenes = args.scenes or sorted(glob.glob(os.path.join(HERE, "*.json")))
     passing = raster_passing()
     unknown = passing - {os.path.splitext(os.path.basename(s))[0] for s in scenes}
@@ -55,9 +62,11 @@ def main():
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
         cargs = compare.parse_args([scene, os.path.join(args.outdir, name), "--no-ladder",
-                                    "--samples-cycles", str(args.samples_cycles), "--samples-ref",
+                                    "--samples-cycles",
+                                    str(args.samples_cycles or SAMPLES_CYCLES_OF.get(name, SAMPLES_CYCLES)),
+                                    "--samples-ref",
                                     str(args.samples_ref), "--tidepool", args.tidepool, "--blender", args.blender,
-                                    "--threads", str(args.threads)])
+                                    "--threads", str(args.threads), "--cycles-cache", args.cycles_cache])
         f = compare.Comparison(cargs).run_all()
         compare.print_figures(f)
         noise = compare.combined_noise(f)

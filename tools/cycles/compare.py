@@ -15,6 +15,7 @@ Needs numpy and OpenImageIO's Python module (Debian: python3-numpy,
 python3-openimageio) and Blender (Debian: blender).
 """
 import argparse
+import hashlib
 import json
 import math
 import os
@@ -108,6 +109,7 @@ class Comparison:
         self.width, self.height = (int(x) for x in args.size.lower().split("x"))
         self.times = {}
         self.env = tidepool_env()
+        self.cached = False
 
     def path(self, name):
         return os.path.join(self.out, name)
@@ -157,7 +159,33 @@ class Comparison:
                                              "--out", self.path("raster.exr"), log="raster.log")
         self.raster_frame = read_exr(self.path("raster.exr"))
 
+    def cycles_key(self, samples, seed):
+        """What a Cycles frame depends on: the inputs, the scripts, the settings and Blender's version."""
+        h = hashlib.sha256()
+        for path in (self.path("scene.glb"), self.path("scene.json"), self.path("sky.exr"),
+                     os.path.join(HERE, "render_cycles.py"), os.path.join(HERE, "scene_json.py"),
+                     os.path.join(scene_json.REPO, "scenes", "default.json")):
+            with open(path, "rb") as f:
+                h.update(hashlib.sha256(f.read()).digest())
+        if not hasattr(self, "blender_version"):
+            self.blender_version = run([self.args.blender, "-b", "--factory-startup", "--version"])[1].split("\n")[0]
+        camera = oiio.ImageInput.open(self.path("raster.exr"))
+        for attr in ("worldToCamera", "worldToNDC"):
+            h.update(repr(camera.spec().getattribute(attr)).encode())
+        camera.close()
+        h.update(repr((samples, seed, self.size, self.blender_version,
+                       os.environ.get("TIDEPOOL_CYCLES_ALBEDO_SCALE", "1"))).encode())
+        return h.hexdigest()[:24]
+
     def cycles(self, samples, seed, name):
+        cached = None
+        if self.args.cycles_cache:
+            os.makedirs(self.args.cycles_cache, exist_ok=True)
+            cached = os.path.join(self.args.cycles_cache, self.cycles_key(samples, seed) + ".exr")
+            if os.path.exists(cached):
+                shutil.copyfile(cached, self.path(name))
+                self.cached = True
+                return read_exr(self.path(name)), 0.0, 0.0
         cmd = [self.args.blender, "-b", "--factory-startup", "--python-exit-code", "1",
                "--python", os.path.join(HERE, "render_cycles.py"), "--",
                "--glb", self.path("scene.glb"), "--scene", self.path("scene.json"),
@@ -167,6 +195,9 @@ class Comparison:
             cmd += ["--threads", str(self.args.threads)]
         wall, text = run(cmd, log=self.path(name + ".log"))
         m = re.search(r"render_cycles: rendered in ([0-9.]+) s", text)
+        if cached:
+            shutil.copyfile(self.path(name), cached + ".part")
+            os.replace(cached + ".part", cached)
         return read_exr(self.path(name)), wall, float(m.group(1)) if m else float("nan")
 
     def run_all(self):
@@ -214,6 +245,7 @@ class Comparison:
             "reference_noise_mean": None,
             "model_vs_cycles": None if self.model_frame is None else self.err(self.model_frame, self.cycles_mean),
             "times": self.times,
+            "cycles_cached": self.cached,
             "ladder": self.ladder,
         }
         if len(self.reference_frames) == 2:
@@ -245,7 +277,8 @@ def print_figures(f, out=sys.stdout):
     w(f"  time: export {t['export']:.1f} s, raster {t['raster']:.1f} s, reference "
       + " + ".join(f"{x:.1f}" for x in t["reference"]) + " s, "
       + (f"reference-model {t['model']:.1f} s, " if "model" in t else "") + "Cycles "
-      + " + ".join(f"{a:.1f} ({b:.1f} rendering)" for a, b in cyc) + " s")
+      + (" from the cache" if f.get("cycles_cached") else
+         " + ".join(f"{a:.1f} ({b:.1f} rendering)" for a, b in cyc) + " s"))
     if f["ladder"]:
         w(f"  {'run time against error':34s} {'wall s':>8s} {'render s':>9s} {'RMSE vs Cycles mean':>20s}")
         for k, wall, render, e in f["ladder"]:
@@ -273,6 +306,8 @@ def parse_args(argv=None):
     p.add_argument("--blender", default=shutil.which("blender") or "blender")
     p.add_argument("--ladder", action=argparse.BooleanOptionalAction, default=True,
                    help="Cycles at 1, 2, 4, ... samples against its converged frame (default on)")
+    p.add_argument("--cycles-cache", help="keep Cycles' frames here, keyed by everything they depend on, and "
+                   "take them from here when nothing changed (the reference's figures are always fresh)")
     p.add_argument("--model", action="store_true",
                    help="also `render --reference-model` (the raster's lighting model traced) against Cycles")
     p.add_argument("--json", help="also write the figures here")

@@ -21,9 +21,9 @@ import OpenImageIO as oiio
 
 SUN_ELEVATION = 40.0  # degrees
 SUN_AZIMUTH = 60.0  # degrees, from +x towards +z (tidepool's sky.sun_azimuth)
-SUN_RADIUS = 3.0  # degrees: the flat core
-SUN_EDGE = 2.0  # degrees: the smooth fall to zero past the core
-SUN_RADIANCE = np.array([260.0, 240.0, 215.0])
+SUN_RADIUS = 8.0  # degrees: the flat core
+SUN_EDGE = 4.0  # degrees: the smooth fall to zero past the core
+SUN_RADIANCE = np.array([16.0, 15.0, 13.5])
 ZENITH = np.array([0.18, 0.34, 0.80])
 HORIZON = np.array([0.80, 0.86, 0.95])
 GROUND = np.array([0.30, 0.27, 0.22])
