@@ -23,8 +23,9 @@ NOISE_FACTOR = 3.0
 FLOOR = 0.002  # what two converged renderers of the same scene still differ by (docs/testing.md)
 RASTER_BOUND = 0.02
 SAMPLES_CYCLES = 512  # per seed, two seeds, for a scene SAMPLES_CYCLES_OF leaves out
-# Cycles' samples per scene: each scene's noise (mean of two seeds) under about 0.005, the whole
-# test's first run (nothing cached) about ten minutes on two cores (docs/testing.md).
+# Cycles' samples per scene: each scene's noise (mean of two seeds) 0.002-0.007; the whole test's
+# first run (nothing cached) took 12 minutes on two cores, a run with Cycles cached about 2
+# (docs/testing.md).
 SAMPLES_CYCLES_OF = {"lambert_sphere": 256, "glossy_sphere": 256, "glass_sphere": 512,
                      "flat_pool": 768, "half_submerged": 768, "deep_pool": 1024}
 SAMPLES_REF = 256
