@@ -16,6 +16,8 @@ packages=(
   clang-format  # the house style, checked by the test `format`
   libtinygltf-dev  # glTF export: Debian builds tinygltf as a shared library (its images unused)
   libassimp-dev  # an independent reader of the exported OBJ and glTF, linked only by the tests
+  blender  # the Cycles comparison test (cycles_reference) renders with it headless
+  python3-numpy python3-openimageio  # that test's driver reads the EXRs and measures them (tools/cycles)
 )
 
 missing=()
