@@ -77,6 +77,11 @@ TEST(ReferenceTest, FlatWaterReflectsTheSkyByFresnelsEquations) {
 // sends one shadow ray to a point of the sun's disc, and at 16 the
 // penumbrae's noise alone put the water's pixels at 0.0099.)
 constexpr double kRasterBound = 0.012;
+// The brick walls seen through the water: 0.0065 while the raster showed the
+// pool n^2 too bright; 0.0121 since it scales the light by 1 / n^2 and takes
+// the sun through the water (docs/accuracy.md). The same joints refracted by
+// the waves, now darker, where the display curve is steeper.
+constexpr double kBricksThroughWaterBound = 0.015;
 
 class ReferenceRasterTest : public GpuTest {
  protected:
@@ -276,7 +281,7 @@ TEST_F(ReferenceRasterTest, BrickWallsMatchTheReference) {
   ASSERT_GT(et.pixels, size_t(width * height / 20));  // measured 1368
   EXPECT_LT(e.rmse, kRasterBound);
   EXPECT_LT(ed.rmse, kRasterBound);
-  EXPECT_LT(et.rmse, kRasterBound);
+  EXPECT_LT(et.rmse, kBricksThroughWaterBound);
   // Plain walls are far from it: the mask holds the pattern, not noise.
   EXPECT_GT(plainRaster.rmse, 10.0 * kRasterBound);
 }

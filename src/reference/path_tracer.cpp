@@ -141,6 +141,8 @@ class PathTracer {
     }
     spheres_ = placed.spheres;
     if (surface) {
+      flatWater_ = std::all_of(surface->mesh.positions.begin(), surface->mesh.positions.end(),
+                               [&](glm::vec3 v) { return std::abs(v.y - level_) <= kSurfaceOffset; });
       surfaceOnly_ =
           std::make_unique<ReferenceScene>(std::vector<scene::Mesh>{surface->mesh}, std::vector<scene::Sphere>{});
       if (env_.hasSun()) {
@@ -179,11 +181,15 @@ class PathTracer {
             throughput *= scattering_ * glm::exp(-extinction_ * s) / (mean * std::exp(-mean * s));
             origin += s * dir;
             const glm::vec3 wo = -dir;
-            radiance += throughput * sunThroughWater(origin, random, [&](glm::vec3 toLight) {
-                          return glm::vec3(shader::henyeyGreenstein(glm::dot(-toLight, -wo), anisotropy_));
-                        });
-            dir = sampleHenyeyGreenstein(dir, anisotropy_, random.uniform2());
-            state = PathState{true, 0.0f, true, 0, 0};
+            auto phase = [&](glm::vec3 toLight) {
+              return shader::henyeyGreenstein(glm::dot(-toLight, -wo), anisotropy_);
+            };
+            auto response = [&](glm::vec3 toLight) { return glm::vec3(phase(toLight)); };
+            radiance += throughput *
+                        (sunThroughWater(origin, random, response) + skyThroughWater(origin, random, response, phase));
+            const glm::vec3 next = sampleHenyeyGreenstein(dir, anisotropy_, random.uniform2());
+            state = PathState{true, shader::henyeyGreenstein(glm::dot(next, dir), anisotropy_), true, 0, 0};
+            dir = next;
             if (!roulette(bounce, throughput, random)) break;
             continue;
           }
@@ -308,8 +314,10 @@ class PathTracer {
       // Straight from a vertex in the air, which sampled both.
       return sky * powerHeuristic(state.lastPdf, env_.skyPdf(dir)) + sun * powerHeuristic(state.lastPdf, env_.sunPdf());
     }
-    // Out of the water by one refraction: the sun is sunThroughWater's.
-    if (state.lastInWater && state.specularSince == 1 && state.waterRefractionsSince == 1) return sky;
+    // Out of the water by one refraction: the sun is sunThroughWater's, and
+    // under flat water the sky skyThroughWater's too, weighed against it.
+    if (state.lastInWater && state.specularSince == 1 && state.waterRefractionsSince == 1)
+      return flatWater_ ? sky * powerHeuristic(state.lastPdf, skyPdfInWater(dir)) : sky;
     return sky + sun;
   }
 
@@ -425,6 +433,38 @@ class PathTracer {
            focus;
   }
 
+  // The sky at a point in the water under flat water: a direction drawn
+  // from the sky's texels, refracted down to p by the surface, as
+  // sunThroughWater takes the sun (Fresnel, the solid angle's compression,
+  // absorption, shadow), weighed by the power heuristic against the paths'
+  // own directions out by one refraction (`pdf(toLight)`: their density).
+  // Nothing under waves, where those paths alone find the sky.
+  template <typename Response, typename Pdf>
+  glm::vec3 skyThroughWater(glm::vec3 p, PathRandom& random, Response response, Pdf pdf) const {
+    if (!flatWater_) return glm::vec3(0.0f);
+    const LightSample s = env_.sampleSky(random.uniform2());
+    if (s.pdf <= 0.0f || s.direction.y <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 toLight = -glm::refract(-s.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / waterIor_);
+    const glm::vec3 f = response(toLight);
+    if (largest(f) <= 0.0f) return glm::vec3(0.0f);
+    const float toSurface = std::max(level_ - p.y, 0.0f) / toLight.y;
+    if (blocked(p, toLight, toSurface, true)) return glm::vec3(0.0f);
+    if (blocked(p + toSurface * toLight, s.direction, std::numeric_limits<float>::infinity(), true))
+      return glm::vec3(0.0f);
+    const float transmitted = 1.0f - shader::fresnelDielectric(s.direction.y, 1.0f, waterIor_);
+    return f * s.radiance / s.pdf * transmitted * (s.direction.y / toLight.y) * glm::exp(-extinction_ * toSurface) *
+           powerHeuristic(skyPdfInWater(s.direction), pdf(toLight));
+  }
+
+  // The density per steradian of the water's directions with which
+  // skyThroughWater draws the one that leaves the flat surface along `air`:
+  // the sky's density times d omega_air / d omega_water = n^2 cos_water / cos_air.
+  float skyPdfInWater(glm::vec3 air) const {
+    if (air.y <= 0.0f) return 0.0f;
+    const float sin2Water = (1.0f - air.y * air.y) / (waterIor_ * waterIor_);
+    return env_.skyPdf(air) * waterIor_ * waterIor_ * std::sqrt(1.0f - sin2Water) / air.y;
+  }
+
   // A Lambertian or glossy surface: its light samples (in the air the sun
   // and the sky, in the water the sun through the surface), then a direction
   // from its BSDF. False ends the path.
@@ -449,10 +489,12 @@ class PathTracer {
           radiance += throughput * f * s.radiance / s.pdf * powerHeuristic(s.pdf, bsdfPdf(m, n, wo, s.direction));
       }
     } else if (medium == Medium::Water) {
-      radiance +=
-          throughput * sunThroughWater(p, random, [&](glm::vec3 toLight) {
-            return glm::dot(toLight, hit.geometric) > 0.0f ? bsdfTimesCosine(m, n, wo, toLight) : glm::vec3(0.0f);
-          });
+      auto response = [&](glm::vec3 toLight) {
+        return glm::dot(toLight, hit.geometric) > 0.0f ? bsdfTimesCosine(m, n, wo, toLight) : glm::vec3(0.0f);
+      };
+      radiance += throughput *
+                  (sunThroughWater(p, random, response) +
+                   skyThroughWater(p, random, response, [&](glm::vec3 toLight) { return bsdfPdf(m, n, wo, toLight); }));
     }
     const glm::vec2 u = random.uniform2();
     const BsdfSample b = sampleBsdf(m, n, wo, glm::vec3(u, random.uniform()));
@@ -473,6 +515,7 @@ class PathTracer {
   shader::PoolParams pool_{};
   std::vector<glm::vec4> floorVertices_;
   float poolHalf_ = 0.0f, level_ = 0.0f;
+  bool flatWater_ = false;  // the surface lies at its rest level everywhere
   std::vector<scene::Mesh> meshes_;
   std::vector<Surface> surfaces_;  // per mesh
   std::vector<scene::Box> boxes_;  // per mesh: its box where it is one
