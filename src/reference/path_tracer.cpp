@@ -407,20 +407,17 @@ class PathTracer {
     }
   }
 
-  // The sun at a point in the water: one point of its disc, its ray
-  // refracted by the flat surface at the rest level down to p, times
-  // Fresnel's transmission, the disc's solid angle as the water compresses
-  // it (cos in the air over cos in the water, the radiance's n^2 and the
-  // solid angle's 1/n^2 cancelling), the absorption on the way and the
-  // waves' focusing (caustics_). `response(toLight)`: the BSDF times the
-  // cosine, or the phase function, for light from toLight.
+  // A light's sample `s` (its direction in the air) reaching p in the water
+  // through the flat surface at the rest level: `response(toLight)` (the
+  // BSDF times the cosine, or the phase function) times its radiance over
+  // its density, Fresnel's transmission, its solid angle as the water
+  // compresses it (cos in the air over cos in the water: the radiance's n^2
+  // and the solid angle's 1 / n^2 cancel) and the absorption on the way
+  // down; 0 where something is in the way. `toLight`: its direction in the water.
   template <typename Response>
-  glm::vec3 sunThroughWater(glm::vec3 p, PathRandom& random, Response response) const {
-    if (!env_.hasSun()) return glm::vec3(0.0f);
-    const LightSample s = env_.sampleSun(random.uniform2());
-    if (s.direction.y <= 0.0f) return glm::vec3(0.0f);
-    const glm::vec3 travel = glm::refract(-s.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / waterIor_);
-    const glm::vec3 toLight = -travel;
+  glm::vec3 refractedLight(glm::vec3 p, const LightSample& s, Response response, glm::vec3& toLight) const {
+    if (s.pdf <= 0.0f || s.direction.y <= 0.0f) return glm::vec3(0.0f);
+    toLight = -glm::refract(-s.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / waterIor_);
     const glm::vec3 f = response(toLight);
     if (largest(f) <= 0.0f) return glm::vec3(0.0f);
     const float toSurface = std::max(level_ - p.y, 0.0f) / toLight.y;
@@ -428,32 +425,33 @@ class PathTracer {
     if (blocked(p + toSurface * toLight, s.direction, std::numeric_limits<float>::infinity(), true))
       return glm::vec3(0.0f);
     const float transmitted = 1.0f - shader::fresnelDielectric(s.direction.y, 1.0f, waterIor_);
+    return f * s.radiance / s.pdf * transmitted * (s.direction.y / toLight.y) * glm::exp(-extinction_ * toSurface);
+  }
+
+  // The sun at a point in the water: one point of its disc refracted down
+  // to p, times the waves' focusing (caustics_).
+  template <typename Response>
+  glm::vec3 sunThroughWater(glm::vec3 p, PathRandom& random, Response response) const {
+    if (!env_.hasSun()) return glm::vec3(0.0f);
+    glm::vec3 toLight;
+    const glm::vec3 light = refractedLight(p, env_.sampleSun(random.uniform2()), response, toLight);
     const float focus = caustics_ ? caustics_->at(shader::causticsLine(pool_, env_.sunDirection(), p)) : 1.0f;
-    return f * s.radiance / s.pdf * transmitted * (s.direction.y / toLight.y) * glm::exp(-extinction_ * toSurface) *
-           focus;
+    return light * focus;
   }
 
   // The sky at a point in the water under flat water: a direction drawn
-  // from the sky's texels, refracted down to p by the surface, as
-  // sunThroughWater takes the sun (Fresnel, the solid angle's compression,
-  // absorption, shadow), weighed by the power heuristic against the paths'
-  // own directions out by one refraction (`pdf(toLight)`: their density).
-  // Nothing under waves, where those paths alone find the sky.
+  // from the sky's texels refracted down to p, weighed by the power
+  // heuristic against the paths' own directions out by one refraction
+  // (`pdf(toLight)`: their density). Nothing under waves, where those paths
+  // alone find the sky.
   template <typename Response, typename Pdf>
   glm::vec3 skyThroughWater(glm::vec3 p, PathRandom& random, Response response, Pdf pdf) const {
     if (!flatWater_) return glm::vec3(0.0f);
     const LightSample s = env_.sampleSky(random.uniform2());
-    if (s.pdf <= 0.0f || s.direction.y <= 0.0f) return glm::vec3(0.0f);
-    const glm::vec3 toLight = -glm::refract(-s.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / waterIor_);
-    const glm::vec3 f = response(toLight);
-    if (largest(f) <= 0.0f) return glm::vec3(0.0f);
-    const float toSurface = std::max(level_ - p.y, 0.0f) / toLight.y;
-    if (blocked(p, toLight, toSurface, true)) return glm::vec3(0.0f);
-    if (blocked(p + toSurface * toLight, s.direction, std::numeric_limits<float>::infinity(), true))
-      return glm::vec3(0.0f);
-    const float transmitted = 1.0f - shader::fresnelDielectric(s.direction.y, 1.0f, waterIor_);
-    return f * s.radiance / s.pdf * transmitted * (s.direction.y / toLight.y) * glm::exp(-extinction_ * toSurface) *
-           powerHeuristic(skyPdfInWater(s.direction), pdf(toLight));
+    glm::vec3 toLight;
+    const glm::vec3 light = refractedLight(p, s, response, toLight);
+    if (largest(light) <= 0.0f) return glm::vec3(0.0f);
+    return light * powerHeuristic(skyPdfInWater(s.direction), pdf(toLight));
   }
 
   // The density per steradian of the water's directions with which
