@@ -110,13 +110,13 @@ void addWakeBench(CLI::App* bench, BenchWakeOptions& o) {
 }
 
 void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
-  CLI::App* water = bench->add_subcommand(
-      "water",
-      "Water refraction modes (accurate, apparent) on fixed views: GPU ms against error from the CPU reference");
+  CLI::App* water = bench->add_subcommand("water",
+                                          "Water refraction modes (accurate, apparent) on fixed views: GPU ms against "
+                                          "error from the raster's model traced on the CPU");
   addSceneSourceOptions(water, o.scene, "Scene file (JSON); default: the built-in scene");
   addSizesOption(water, o.resolutions);
   water->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
-  water->add_option("--samples", o.samples, "Samples per pixel of the reference")
+  water->add_option("--samples", o.samples, "Samples per pixel of the model traced")
       ->capture_default_str()
       ->check(inRange(1u, 4096u));
   water->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
@@ -202,14 +202,14 @@ void addIblBench(CLI::App* bench, BenchIblOptions& o) {
 }
 
 void addGlassBench(CLI::App* bench, BenchGlassOptions& o) {
-  CLI::App* glass = bench->add_subcommand(
-      "glass",
-      "Glass spheres' image-space refraction: binary-search steps against GPU ms and error from the CPU reference");
+  CLI::App* glass = bench->add_subcommand("glass",
+                                          "Glass spheres' image-space refraction: binary-search steps against GPU ms "
+                                          "and error from the raster's model traced on the CPU");
   addSceneSourceOptions(glass, o.scene,
                         "Scene file (JSON) with a glass sphere; default: a glass sphere over the ground");
   addSizeOption(glass, o.resolution);
   addListOption(glass, "--steps", o.steps, "Binary-search steps to measure, each 1 to 64", inRange(1u, 64u));
-  glass->add_option("--samples", o.samples, "Samples per pixel of the reference")
+  glass->add_option("--samples", o.samples, "Samples per pixel of the model traced")
       ->capture_default_str()
       ->check(inRange(1u, 4096u));
   glass->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
