@@ -509,7 +509,7 @@ TEST_F(GlassTest, TheFloorThroughWaterAndGlassIsFilteredAtOneSample) {
   s.camera.position = {1.3f, 1.2f, 1.9f};
   s.camera.target = {0.5f, -0.4f, 0.5f};
   scene::Scene sphere = s, box = s;
-  sphere.spheres = {{.center = {0.6f, -0.25f, 0.6f}, .radius = 0.35f, .material = "glass", .ior = 1.5f}};
+  sphere.spheres = {{.center = {0.6f, -0.25f, 0.6f}, .radius = 0.38f, .material = "glass", .ior = 1.5f}};
   box.spheres.clear();
   box.boxes = {{.center = {0.6f, -0.35f, 0.6f},
                 .size = {0.6f, 0.4f, 0.5f},

@@ -10,6 +10,7 @@
 #include <glm/gtc/constants.hpp>
 #include <optional>
 
+#include "exact_fresnel.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
@@ -302,10 +303,16 @@ TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
   const auto sky = render::skyParams(s.sky);
   const float ior = s.water.ior;
   const float f0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
-  const glm::vec3 irradiance = glm::vec3(u.sunIrradiance) * std::max(u.sunDirection.y, 0.0f) +
-                               shader::sh9Irradiance(u.skySh, glm::vec3(0.0f, 1.0f, 0.0f));
   const float half = 0.5f * s.water.extent;
   const float floorY = s.ground.height - s.pool.depth;
+  // The floor's irradiance: the sun refracted down through the flat water
+  // (Fresnel's transmission, the horizontal flux cos(air), absorbed over
+  // the slant path), and the sky's SH9 (the raster's model of it).
+  const double sinSun = std::max(u.sunDirection.y, 0.0f);
+  const double cosSunInWater = std::sqrt(1.0 - (1.0 - sinSun * sinSun) / (double(ior) * ior));
+  const glm::vec3 sunDown = glm::vec3(u.sunIrradiance) * float(sinSun * (1.0 - fresnelFromAir(sinSun, ior))) *
+                            glm::exp(-s.water.absorption * float((s.water.level - floorY) / cosSunInWater));
+  const glm::vec3 irradiance = sunDown + shader::sh9Irradiance(u.skySh, glm::vec3(0.0f, 1.0f, 0.0f));
   auto parityAt = [&](glm::vec2 xz, bool& nearEdge) {
     const glm::vec2 q = xz / s.pool.tileSize;
     const glm::vec2 f = q - glm::floor(q);
@@ -330,7 +337,9 @@ TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
       const bool straightEven = parityAt({straight.x, straight.z}, straightNearEdge);
       if (nearEdge) continue;
       const glm::vec3 albedo = even ? s.pool.tileAlbedoA : s.pool.tileAlbedoB;
-      const glm::vec3 transmitted = albedo / glm::pi<float>() * irradiance * glm::exp(-s.water.absorption * s2);
+      // Seen from the air: 1 / n^2 of the radiance under the surface.
+      const glm::vec3 transmitted =
+          albedo / glm::pi<float>() * irradiance * glm::exp(-s.water.absorption * s2) / (ior * ior);
       const float cosIn = std::clamp(-glm::dot(d, n), 0.0f, 1.0f);
       const float fresnel = f0 + (1.0f - f0) * std::pow(1.0f - cosIn, 5.0f);
       const glm::vec3 reflected = shader::skyRadiance(sky, glm::reflect(d, n), 1.0f);
