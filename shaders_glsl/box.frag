@@ -23,8 +23,10 @@ void main() {
   const vec3 n = normalize(worldNormal);
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
-  color = vec4(lambertRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic) * toCamera +
+  const vec3 reflectance = params.albedo.rgb / kPi;
+  color = vec4(reflectance * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic) *
+                       toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0) * toCamera);
+  writeGbuffer(frame, n, reflectance * objectIrradiance(pool, frame, worldPosition, n, 0.0) * toCamera);
 }

@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The tiled pool floor, Lambertian (shared/shading.h), lit through the water
-// (the sun through the waves from the caustics texture), seen through the
-// water when the camera is under it.
+// (the sun through the waves from the caustics texture, the rest baked:
+// shared/pool_light.h), seen through the water when the camera is under it.
 #include "shared/shading.h"
 #include "lib/caustics_lookup.glsl"
 #include "lib/gbuffer.glsl"
@@ -16,6 +16,8 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform Pool { PoolParams pool; };
 layout(binding = 2) uniform sampler2D caustics;
 layout(binding = 3) uniform Medium { CameraMedium medium; };
+layout(binding = 5) readonly buffer FloorVertices { vec4 floorVertices[]; };  // and the baked light
+#include "shared/pool_light.h"
 
 void main() {
   const vec3 n = normalize(worldNormal);
@@ -27,5 +29,5 @@ void main() {
   color = vec4(albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, caustic) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  writeGbuffer(frame, n, lambertRadiance(withoutSun(frame), albedo, n, 1.0) * toCamera);
+  writeGbuffer(frame, n, albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, 0.0) * toCamera);
 }

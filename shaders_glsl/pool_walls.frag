@@ -19,6 +19,8 @@ layout(binding = 6) readonly buffer WaterCells { WaterCell waterCells[]; };  // 
 #include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 layout(binding = 4) uniform sampler2D glossyMap;
+layout(binding = 5) readonly buffer FloorVertices { vec4 floorVertices[]; };  // and the baked light
+#include "shared/pool_light.h"
 
 void main() {
   const vec3 n = normalize(worldNormal);
@@ -32,7 +34,7 @@ void main() {
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  // AO scales the Lambertian part's sky light only.
-  writeGbuffer(frame, n, glossyMix(lambertRadiance(withoutSun(frame), albedo, n, 1.0), vec3(0.0),
+  // AO scales the Lambertian part's light but the sun's.
+  writeGbuffer(frame, n, glossyMix(albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, 0.0), vec3(0.0),
                                    pool.wallGloss.x) * toCamera);
 }

@@ -27,11 +27,12 @@ void main() {
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 view = normalize(worldPosition - frame.cameraPosition.xyz);
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
-  const vec3 diffuse = lambertRadiance(frame, params.albedo.rgb, n, frameSunShare(worldPosition) * caustic);
+  const vec3 diffuse =
+      params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
                    viewInScatter(medium, worldPosition),
                1.0);
-  // AO scales the Lambertian part's sky light only.
-  writeGbuffer(frame, n, glossyMix(lambertRadiance(withoutSun(frame), params.albedo.rgb, n, 1.0), vec3(0.0),
-                                   params.material.x) * toCamera);
+  // AO scales the Lambertian part's light but the sun's.
+  writeGbuffer(frame, n, glossyMix(params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, 0.0),
+                                   vec3(0.0), params.material.x) * toCamera);
 }

@@ -27,7 +27,7 @@ layout(binding = 4) uniform Objects { SceneObjects objects; };  // shared/object
 layout(binding = 6) uniform sampler2D caustics;
 layout(binding = 7) uniform sampler2D glossyMap;  // the glossy walls' and spheres' environment
 layout(binding = 8) readonly buffer FloorVertices { vec4 floorVertices[]; };  // shared/pool_trace.h's
-#include "shared/pool_trace.h"
+#include "shared/pool_light.h"
 #include "shared/object_cast.h"
 
 // The sky texture has one level: level 0 is what an implicit lookup reads,
@@ -295,8 +295,8 @@ vec3 objectSeen(ObjectHit object, vec3 p, vec3 dir, float sunShare, RayDifferent
 #ifdef TP_GLASS
   if (object.glass > 0.0) return glassSeen(object, p, dir, rd, water);
 #endif
-  return glossyRadiance(glossyMap, lambertRadiance(frame, object.albedo, object.normal, sunShare), dir, object.normal,
-                        object.material);
+  return glossyRadiance(glossyMap, object.albedo / kPi * objectIrradiance(pool, frame, p, object.normal, sunShare), dir,
+                        object.normal, object.material);
 }
 
 // What a ray leaving p (inside the pool, below the rim, in the air) along r

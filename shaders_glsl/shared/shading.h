@@ -22,10 +22,13 @@ TP_BEGIN
 // above the horizon seen from the normal (pi L (1 + n.y) / 2 for a uniform
 // sky L), and the sun, `sunShare` of it (the share of its disc in view,
 // sunVisibility, times the caustics under the water).
+TP_INLINE vec3 openAirIrradiance(FrameUniforms frame, vec3 n, float sunShare) {
+  return sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
+         sh9Irradiance(frame.skySh, n);
+}
+
 TP_INLINE vec3 lambertRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {
-  vec3 irradiance = sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
-                    sh9Irradiance(frame.skySh, n);
-  return albedo / kPi * irradiance;
+  return albedo / kPi * openAirIrradiance(frame, n, sunShare);
 }
 
 // Radiance leaving the ground (or the pool's floor: its tiles) at world xz
@@ -66,26 +69,15 @@ TP_INLINE vec3 sunThroughFlatWater(PoolParams pool, FrameUniforms frame, vec3 p,
          exp(-vec3(pool.extinction) * (depth / cosWater));
 }
 
-// The sun's and the sky's irradiance on a surface of the pool at p with
-// normal n, `sunShare` of the sun's: under the rest level the sun comes
-// through the water. The sky's is the open sky's everywhere (SH9): Snell's
-// window alone, without the light the pool sends back down off the
-// surface's underside and its walls, measured further from the path-traced
-// truth than this (docs/accuracy.md).
-TP_INLINE vec3 poolIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n, float sunShare) {
-  vec3 sun = underRestLevel(pool, p) ? sunThroughFlatWater(pool, frame, p, n)
-                                     : vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f);
-  return sunShare * sun + sh9Irradiance(frame.skySh, n);
-}
-
-// The floor, lit through the water (poolIrradiance). `caustic`: the sun's
-// irradiance through the waves relative to flat water (the caustics
-// texture; 1 where caustics are off), times its disc's share in view
-// (sunVisibility).
-TP_INLINE vec3 poolFloorRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
-                                 float caustic) {
-  return groundAlbedo(pool.tiles, vec2(position.x, position.z), footprint) / kPi *
-         poolIrradiance(pool, frame, position, normal, caustic);
+// The sun's and the sky's irradiance on an object (a sphere, a box) at p
+// with normal n, `sunShare` of the sun's. In the pool under the water's
+// rest level: the sun through the flat surface, and the pool's light around
+// it (PoolParams::around); elsewhere the sun and the open sky (SH9, the
+// ground's light below the horizon).
+TP_INLINE vec3 objectIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n, float sunShare) {
+  if (underRestLevel(pool, p) && max(abs(p.x), abs(p.z)) < pool.box.x)
+    return sunShare * sunThroughFlatWater(pool, frame, p, n) + sh9Irradiance(pool.around, n);
+  return openAirIrradiance(frame, n, sunShare);
 }
 
 // The direction the caustics texture's light lines run in: the sun's,
@@ -109,17 +101,6 @@ TP_INLINE vec2 causticsLine(PoolParams pool, vec3 toSun, vec3 p) {
 TP_INLINE vec2 causticsUv(PoolParams pool, vec3 toSun, vec3 p) {
   vec2 line = clamp(causticsLine(pool, toSun, p), vec2(-pool.water.z), vec2(pool.water.z));
   return line / (2.0f * pool.box.x) + 0.5f;
-}
-
-// The walls see the sky above the horizon on their side (half of it, for a
-// uniform sky) above the water, and through it below (poolIrradiance); the
-// pool's own rim is not counted. `footprint`: the pixel's
-// on the wall, in metres along and down it (0 point-samples the bricks).
-// `sunShare`: the share of the sun's disc in view (sunVisibility).
-TP_INLINE vec3 poolWallRadiance(PoolParams pool, FrameUniforms frame, vec3 position, vec3 normal, vec2 footprint,
-                                float sunShare) {
-  return poolWallAlbedo(pool, poolWallCoordinates(pool, position, normal), footprint) / kPi *
-         poolIrradiance(pool, frame, position, normal, sunShare);
 }
 
 // Distances along origin + s dir from inside the pool's square to the wall

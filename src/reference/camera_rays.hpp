@@ -2,6 +2,7 @@
 // The camera's rays as the CPU tracers cast them: through a point of the
 // image (pixels from the top-left corner), from the near plane on, as the
 // raster's projection maps them; and the frame they fill.
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <limits>
@@ -9,6 +10,7 @@
 #include "render/renderer.hpp"
 
 #include "shared/frame.h"
+#include "shared/haze.h"
 
 namespace tp::render {
 
@@ -53,6 +55,19 @@ inline RenderedFrame emptyTracedFrame(const shader::FrameUniforms& uniforms, uin
   f.normal.assign(pixels * 4, 0.0f);
   f.position.assign(pixels * 4, std::numeric_limits<float>::infinity());
   return f;
+}
+
+// What a camera ray along unit `dir` brings through the air's haze
+// (shared/haze.h): `radiance` from the first surface met `distance` metres
+// away, or from the sky when nothing was met (infinite distance), which the
+// haze hides below the horizon; `horizon(across)` the sky at the horizon
+// direction the haze takes its light from. As it is without haze.
+template <typename Horizon>
+glm::vec3 seenThroughHaze(glm::vec3 radiance, glm::vec3 dir, float distance, float hazeDistance, Horizon horizon) {
+  if (hazeDistance <= 0.0f) return radiance;
+  const glm::vec3 light = horizon(shader::hazeHorizonDirection(dir));
+  if (!std::isfinite(distance)) return dir.y < 0.0f ? light : radiance;
+  return shader::hazed(radiance, light, distance, hazeDistance);
 }
 
 }  // namespace tp::render

@@ -80,10 +80,4 @@ BsdfSample sampleBsdf(const SurfaceBsdf& m, glm::vec3 n, glm::vec3 wo, glm::vec3
   return s;
 }
 
-void tangentFrame(glm::vec3 n, glm::vec3& t, glm::vec3& b) {
-  const glm::vec3 helper = std::abs(n.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
-  t = glm::normalize(glm::cross(helper, n));
-  b = glm::cross(n, t);
-}
-
 }  // namespace tp::render

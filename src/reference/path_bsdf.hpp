@@ -40,7 +40,4 @@ BsdfSample sampleBsdf(const SurfaceBsdf& m, glm::vec3 n, glm::vec3 wo, glm::vec3
 float ggxD(float alpha, float cosH);
 float ggxG1(float alpha, float cosV);
 
-// The orthonormal frame about unit n: any two unit tangents completing it.
-void tangentFrame(glm::vec3 n, glm::vec3& t, glm::vec3& b);
-
 }  // namespace tp::render

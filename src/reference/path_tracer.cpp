@@ -16,6 +16,7 @@
 #include "reference/reference_caustics.hpp"
 #include "reference/reference_scene.hpp"
 #include "shading/frame_uniforms.hpp"
+#include "shading/hammersley.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "shared/glass.h"
@@ -27,9 +28,6 @@
 namespace tp::render {
 namespace {
 
-// How far a continued ray starts off the surface it leaves, in metres: far
-// above float round-off at the scene's scale, far below any feature.
-constexpr float kSurfaceOffset = 1e-4f;
 // Texels a side of the light-traced focusing of the sun under the waves:
 // 1.6 cm in the default 4 m pool.
 constexpr uint32_t kCausticsSize = 256;
@@ -216,13 +214,9 @@ class PathTracer {
       }
       if (!roulette(bounce, throughput, random)) break;
     }
-    if (inAirAtStart && hazeDistance_ > 0.0f) {
-      const glm::vec3 across = shader::hazeHorizonDirection(eyeDir);
-      const glm::vec3 horizon = env_.sky(across) + env_.sun(across);
-      if (!firstDistance || !std::isfinite(*firstDistance)) return eyeDir.y < 0.0f ? horizon : radiance;
-      return shader::hazed(radiance, horizon, *firstDistance, hazeDistance_);
-    }
-    return radiance;
+    if (!inAirAtStart) return radiance;
+    return seenThroughHaze(radiance, eyeDir, firstDistance.value_or(std::numeric_limits<float>::infinity()),
+                           hazeDistance_, [&](glm::vec3 across) { return env_.sky(across) + env_.sun(across); });
   }
 
   // The surface at the end of the ray from `origin` (its position and
@@ -287,14 +281,7 @@ class PathTracer {
     return glm::dot(h.geometric, h.position - centre) >= 0.0f ? h.geometric : -h.geometric;
   }
 
-  // Whether the point lies under the water's surface in the pool: the line
-  // up from it meets the surface (cast a little in from the walls).
-  bool underTheSurface(glm::vec3 p) const {
-    if (!surfaceOnly_ || std::max(std::abs(p.x), std::abs(p.z)) > poolHalf_) return false;
-    const float inside = poolHalf_ - kSurfaceOffset;
-    const glm::vec3 from(std::clamp(p.x, -inside, inside), p.y, std::clamp(p.z, -inside, inside));
-    return surfaceOnly_->intersect(from, glm::vec3(0.0f, 1.0f, 0.0f), 0.0f).hit();
-  }
+  bool underTheSurface(glm::vec3 p) const { return underTheWaterSurface(surfaceOnly_.get(), poolHalf_, p); }
 
   bool roulette(uint32_t bounce, glm::vec3& throughput, PathRandom& random) const {
     if (largest(throughput) <= 0.0f) return false;
@@ -530,7 +517,8 @@ PathTracedFrame renderPathTraced(const scene::Scene& scene, const sim::WaterStat
                                  uint32_t width, uint32_t height, const PathTracerOptions& options) {
   if (options.samples == 0) throw std::invalid_argument("path tracer: samples must be at least 1");
   const auto start = std::chrono::steady_clock::now();
-  const shader::FrameUniforms uniforms = frameUniforms(scene, width, height);
+  // Its camera alone: the path tracer takes no SH9 of the sky.
+  const shader::FrameUniforms uniforms = frameUniforms(scene, SkyLight{}, width, height);
   const PathTracer tracer(scene, water, frame, options.maxBounces);
   const Medium cameraMediumNow = cameraMedium(scene, water).extinction.w > 0.0f ? Medium::Water : Medium::Air;
   const CameraRays rays(uniforms, scene.camera.position, width, height);

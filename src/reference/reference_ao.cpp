@@ -15,11 +15,6 @@
 namespace tp::render {
 namespace {
 
-// How far an occlusion ray starts off the surface along its normal, in metres:
-// far above float round-off at the scene's scale (metres), so a ray does not
-// hit the triangle it leaves, and far below any feature, so it misses nothing.
-constexpr float kSurfaceOffset = 1e-4f;
-
 // The occluders of a frame: its triangles less the water and the glass
 // (transparent, and drawn after the SSAO, which does not see them) and the
 // spheres' tessellations (cast exactly).

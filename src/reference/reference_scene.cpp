@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -105,6 +106,13 @@ ReferenceHit ReferenceScene::intersect(glm::vec3 origin, glm::vec3 dir, float tN
     hit.geometricNormal = glm::normalize(glm::vec3(glm::dvec3(origin) + t * glm::dvec3(dir) - glm::dvec3(spheres_[s])));
   }
   return hit;
+}
+
+bool underTheWaterSurface(const ReferenceScene* surface, float poolHalf, glm::vec3 p) {
+  if (!surface || std::max(std::abs(p.x), std::abs(p.z)) > poolHalf) return false;
+  const float inside = poolHalf - kSurfaceOffset;
+  const glm::vec3 from(std::clamp(p.x, -inside, inside), p.y, std::clamp(p.z, -inside, inside));
+  return surface->intersect(from, glm::vec3(0.0f, 1.0f, 0.0f), 0.0f).hit();
 }
 
 }  // namespace tp::render

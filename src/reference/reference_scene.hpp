@@ -21,6 +21,10 @@ struct ReferenceHit {
   bool hit() const { return mesh >= 0 || sphere >= 0; }
 };
 
+// How far a continued ray starts off the surface it leaves, in metres: far
+// above float round-off at the scene's scale, far below any feature.
+inline constexpr float kSurfaceOffset = 1e-4f;
+
 // The frame's triangles in an Embree 3 BVH, and its spheres cast exactly.
 class ReferenceScene {
  public:
@@ -37,5 +41,10 @@ class ReferenceScene {
   std::unique_ptr<Embree> embree_;
   std::vector<glm::vec4> spheres_;  // xyz centre, w radius
 };
+
+// Whether p lies under the water's surface in the pool (`surface`: the
+// surface alone, or none without water; `poolHalf`: half the pool's
+// side): the line up from p meets it, cast a little in from the walls.
+bool underTheWaterSurface(const ReferenceScene* surface, float poolHalf, glm::vec3 p);
 
 }  // namespace tp::render

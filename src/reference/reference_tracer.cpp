@@ -18,6 +18,7 @@
 #include "shading/glossy_model.hpp"
 #include "shading/hammersley.hpp"
 #include "shading/objects_model.hpp"
+#include "shading/pool_light.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/sky_model.hpp"
 #include "shading/water_model.hpp"
@@ -25,7 +26,7 @@
 #include "shared/glossy.h"
 #include "shared/haze.h"
 #include "shared/objects.h"
-#include "shared/pool_trace.h"
+#include "shared/pool_light.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
 #include "shared/water_scattering.h"
@@ -33,9 +34,6 @@
 namespace tp::render {
 namespace {
 
-// How far a continued ray starts off the surface it leaves, in metres: far
-// above float round-off at the scene's scale (metres), far below any feature.
-constexpr float kSurfaceOffset = 1e-4f;
 // Texels a side of the light-traced caustics over the pool (reference_caustics):
 // 1.6 cm in the default 4 m pool, a million photons.
 constexpr uint32_t kReferenceCausticsSize = 256;
@@ -116,7 +114,13 @@ class Tracer {
     if (hasPool(scene)) {
       PoolModel pool = poolModel(scene);
       pool_ = pool.params;
-      floorVertices_ = std::move(pool.floorVertices);
+      // The raster's baked light under the water, baked alike.
+      PoolLight light = bakePoolLight(
+          pool_, std::move(pool.floorVertices),
+          [&](glm::vec3 d) { return skyImage_ ? skyImageRadiance(*skyImage_, d) : shader::skyRadiance(sky_, d, 0.0f); },
+          PoolLightSun{glm::vec3(uniforms.sunDirection), glm::vec3(uniforms.sunIrradiance)});
+      floorVertices_ = std::move(light.floorAndLight);
+      pool_.around = light.around;
       poolHalf_ = 0.5f * scene.water.extent;
       level_ = scene.water.level;
     }
@@ -200,10 +204,9 @@ class Tracer {
   // (shared/haze.h): `radiance` from the surface `first`, faded towards the
   // sky at the horizon; where no surface is, below the horizon, all haze.
   glm::vec3 throughHaze(glm::vec3 radiance, glm::vec3 eye, glm::vec3 dir, const SurfacePoint& first) const {
-    if (hazeDistance_ <= 0.0f) return radiance;
-    const glm::vec3 horizon = sky(shader::hazeHorizonDirection(dir));
-    if (!std::isfinite(first.position.x)) return dir.y < 0.0f ? horizon : radiance;
-    return shader::hazed(radiance, horizon, glm::distance(first.position, eye), hazeDistance_);
+    const float distance =
+        std::isfinite(first.position.x) ? glm::distance(first.position, eye) : std::numeric_limits<float>::infinity();
+    return seenThroughHaze(radiance, dir, distance, hazeDistance_, [&](glm::vec3 across) { return sky(across); });
   }
 
  private:
@@ -214,8 +217,9 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return glossy(shader::lambertRadiance(uniforms_, sphere.albedo, n, sunShare(p, path.sun) * focus(p)), dir, n,
-                    glm::vec2(sphere.specular, sphere.roughness));
+      return glossy(sphere.albedo / glm::pi<float>() *
+                        shader::objectIrradiance(pool_, uniforms_, p, n, sunShare(p, path.sun) * focus(p)),
+                    dir, n, glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -227,19 +231,21 @@ class Tracer {
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return glossy(
-            shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p)), dir, n,
-            glm::vec2(pool_.wallGloss));
+        return glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f),
+                                               sunShare(p, path.sun) * focus(p), floorVertices_.data()),
+                      dir, n, glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
-        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p));
+        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p),
+                                         floorVertices_.data());
       }
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return shader::lambertRadiance(uniforms_, albedo_[size_t(hit.mesh)], n, sunShare(p, path.sun) * focus(p));
+        return albedo_[size_t(hit.mesh)] / glm::pi<float>() *
+               shader::objectIrradiance(pool_, uniforms_, p, n, sunShare(p, path.sun) * focus(p));
       }
       case Material::Water:
         return water(p, dir, hit, specular, path, first);
@@ -319,12 +325,7 @@ class Tracer {
   // it meets the surface reaching the walls, cast a little in from them so as
   // not to run along the mesh's edge. Above the water drawn down by a wave, in
   // the air, whatever the rest level.
-  bool underTheSurface(glm::vec3 p) const {
-    if (!surfaceToTheWalls_ || std::max(std::abs(p.x), std::abs(p.z)) > poolHalf_) return false;
-    const float inside = poolHalf_ - kSurfaceOffset;
-    const glm::vec3 from(std::clamp(p.x, -inside, inside), p.y, std::clamp(p.z, -inside, inside));
-    return surfaceToTheWalls_->intersect(from, glm::vec3(0.0f, 1.0f, 0.0f), 0.0f).hit();
-  }
+  bool underTheSurface(glm::vec3 p) const { return underTheWaterSurface(surfaceToTheWalls_.get(), poolHalf_, p); }
 
   glm::vec3 sky(glm::vec3 dir) const {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
@@ -425,7 +426,7 @@ class Tracer {
   std::optional<SkyImage> glossySky_;  // with glossy surfaces: the sky's texels
   shader::GroundParams ground_;
   shader::PoolParams pool_{};
-  std::vector<glm::vec4> floorVertices_;  // the floor mesh's normals and heights
+  std::vector<glm::vec4> floorVertices_;  // the floor mesh's normals and heights, then the baked light
   uint32_t maxSpecular_;
   glm::vec3 extinction_;  // absorption plus scattering, 1/m
   glm::vec3 scattering_;  // 1/m

@@ -1,19 +1,49 @@
 #include "render/pool.hpp"
 
 #include <array>
+#include <cstring>
+#include <mutex>
 
 #include "gpu/commands.hpp"
 #include "gpu/transfer.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/sky_image.hpp"
 #include "shading/frame_uniforms.hpp"
+#include "shading/pool_light.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
 #include "shared/water.h"
 
 namespace tp::render {
 
-Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
+namespace {
+
+// The pool's baked light (shading/pool_light.hpp) for its model (whose
+// parameters have no light around yet).
+// The last bake is kept: a renderer made again for the same pool and sky
+// (the viewer's at each resize, a sequence's) takes it instead of baking
+// for a third of a second again.
+PoolLight bakedLight(const scene::Scene& scene, const PoolModel& model, const Sky& sky) {
+  struct Bake {
+    shader::PoolParams pool;
+    scene::Sky sky;
+    PoolLight light;
+  };
+  static std::mutex mutex;
+  static std::optional<Bake> last;
+  const std::lock_guard lock(mutex);
+  if (!last || std::memcmp(&last->pool, &model.params, sizeof(model.params)) != 0 || !(last->sky == scene.sky)) {
+    last = Bake{model.params, scene.sky,
+                bakePoolLight(
+                    model.params, model.floorVertices, [&](glm::vec3 d) { return sky.radiance(d); },
+                    PoolLightSun{sky.light().sunDirection, sky.light().sunIrradiance})};
+  }
+  return last->light;
+}
+
+}  // namespace
+
+Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, const Sky& sky, FragmentNeeds needs,
            const gpu::Buffer& objects, const SwappingBuffer& waterCells)
     : floorMesh_(ctx, kPoolFloorGrid, false, "pool floor"),
       walls_(gpu::createGraphicsPipeline(
@@ -34,13 +64,15 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
                                                                   sizeof(shader::PoolWallsParams), {.gbuffer = true}));
   }
   const PoolModel model = poolModel(scene);
-  const shader::PoolParams& pool = model.params;
+  const PoolLight light = bakedLight(scene, model, sky);
+  shader::PoolParams pool = model.params;
+  pool.around = light.around;
   params_ = pool;
   floorTop_ = pool.terrain.w;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,
                                       gpu::MemoryUse::Upload, "pool uniforms");
-  floorVertices_ = gpu::createFilledBuffer(ctx, model.floorVertices, vk::BufferUsageFlagBits::eStorageBuffer,
-                                           gpu::MemoryUse::Device, "pool floor vertices");
+  floorVertices_ = gpu::createFilledBuffer(ctx, light.floorAndLight, vk::BufferUsageFlagBits::eStorageBuffer,
+                                           gpu::MemoryUse::Device, "pool floor vertices and light");
   draw_ = PoolDraw{&uniforms_, &objects, &floorMesh_, &floorVertices_, {}, waterCells};
   if (scene.render.caustics) {
     caustics_ =

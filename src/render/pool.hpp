@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 
+#include "render/sky.hpp"
 #include "render/surfaces.hpp"
 #include "render/water_draw.hpp"
 #include "scene/scene.hpp"
@@ -27,8 +28,10 @@ constexpr uint32_t kCoverVertices = 6;  // pool_cover.vert: one quad
 struct PoolDraw {
   const gpu::Buffer* uniforms = nullptr;
   const gpu::Buffer* objects = nullptr;
-  const GridMesh* floor = nullptr;             // the floor grid at the frame's step
-  const gpu::Buffer* floorVertices = nullptr;  // the floor mesh's vertices (PoolModel::floorVertices)
+  const GridMesh* floor = nullptr;  // the floor grid at the frame's step
+  // The floor mesh's vertices (PoolModel::floorVertices), then the pool's
+  // baked light (shared/pool_light.h).
+  const gpu::Buffer* floorVertices = nullptr;
   GraphImage caustics;
   SwappingBuffer waterCells;
 };
@@ -36,8 +39,9 @@ struct PoolDraw {
 class Pool {
  public:
   // `objects`: the objects the rays cast in shaders meet (shader::SceneObjects).
-  // `waterCells`: the simulation's state (WaterDraw::state).
-  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, FragmentNeeds needs,
+  // `waterCells`: the simulation's state (WaterDraw::state). `sky`: what
+  // lights the pool's baked light.
+  Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, const Sky& sky, FragmentNeeds needs,
        const gpu::Buffer& objects, const SwappingBuffer& waterCells);
   const PoolDraw& draw() const { return draw_; }
   // The caustics pass, when the scene has caustics.

@@ -226,7 +226,7 @@ struct Renderer::Resources {
                },
                {.cached = false, .runIf = [this] { return water->simulating(); }});
     medium.declare(graph, draw, in, [this] { return !skipping || cameraOverWater(live) || mediumMayNotBeAir; });
-    pool.emplace(ctx, graph, scene, needs, objectUniforms, draw.state);
+    pool.emplace(ctx, graph, scene, sky, needs, objectUniforms, draw.state);
     const shader::PoolParams p = poolParams(scene);
     poolBox = {{-p.box.x, shader::poolBottom(p), -p.box.x}, {p.box.x, p.box.y, p.box.x}};
     pool->declareCaustics(graph, draw, in);

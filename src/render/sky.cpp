@@ -24,6 +24,7 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
     fillMips(ctx);
     light_ = skyImageLight(image);
     ref_ = graph.image("sky", image_, vk::ImageLayout::eShaderReadOnlyOptimal);
+    cpuImage_ = image;
     return;
   }
   const vk::Extent2D extent{scene.sky.textureWidth, scene.sky.textureWidth / 2};
@@ -34,6 +35,10 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
   ref_ = graph.image("sky", image_);
   params_ = skyParams(scene.sky);
   skyPipeline_ = gpu::createComputePipeline(ctx, "sky.comp", sizeof(shader::SkyParams));
+}
+
+glm::vec3 Sky::radiance(glm::vec3 d) const {
+  return cpuImage_ ? skyImageRadiance(*cpuImage_, d) : shader::skyRadiance(params_, d, 0.0f);
 }
 
 void Sky::fillMips(const gpu::Context& ctx) {

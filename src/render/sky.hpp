@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 
+#include "render/sky_image.hpp"
 #include "render/sky_mips.hpp"
 #include "render/surfaces.hpp"
 #include "scene/scene.hpp"
@@ -21,6 +22,9 @@ class Sky {
   GraphImage image() const { return ref_; }
   // What lights the scene: the sun and the sky's SH9.
   const SkyLight& light() const { return light_; }
+  // Its radiance along unit d without the sun's disc, on the CPU, as the
+  // texture holds it (what bakes the pool's light: shading/pool_light.hpp).
+  glm::vec3 radiance(glm::vec3 d) const;
   // The procedural sky's pass; nothing for a sky image.
   void declareSky(FrameGraph& graph) const;
   // The sky behind everything, seen through each pixel's view ray: declares
@@ -39,6 +43,7 @@ class Sky {
   gpu::Image image_;
   GraphImage ref_;
   SkyLight light_;
+  std::optional<SkyImage> cpuImage_;  // a sky image's texels, for radiance()
   shader::SkyParams params_{};
   std::optional<gpu::Pipeline> skyPipeline_;  // the procedural sky's
   gpu::Pipeline background_;

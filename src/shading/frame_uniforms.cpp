@@ -1,10 +1,14 @@
 #include "shading/frame_uniforms.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
 
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/sky_model.hpp"
+#include "shading/water_model.hpp"
+#include "shared/surface_pattern.h"
 
 namespace tp::render {
 
@@ -45,6 +49,42 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
   return c;
 }
 
+shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light) {
+  // The ground's mean albedo over a square about the pool, each point's
+  // pattern averaged over a metre (the tiles' and pavers' mean tone).
+  const shader::GroundParams ground = groundParams(scene);
+  const float hole = hasPool(scene) ? 0.5f * scene.water.extent : 0.0f;
+  constexpr int kSteps = 32;
+  constexpr float kReach = 8.0f;  // metres from the pool's centre
+  glm::vec3 sum(0.0f);
+  int n = 0;
+  for (int j = 0; j < kSteps; ++j) {
+    for (int i = 0; i < kSteps; ++i) {
+      const glm::vec2 xz = (glm::vec2(float(i), float(j)) + 0.5f) / float(kSteps) * (2.0f * kReach) - kReach;
+      if (std::max(std::abs(xz.x), std::abs(xz.y)) < hole) continue;
+      sum += shader::groundAlbedo(ground, xz, glm::vec2(1.0f));
+      ++n;
+    }
+  }
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const glm::vec3 irradiance =
+      light.sunIrradiance * std::max(light.sunDirection.y, 0.0f) + shader::sh9Irradiance(light.skySh, up);
+  const glm::vec3 radiance = sum / float(std::max(n, 1)) * irradiance / glm::pi<float>();
+  // A uniform radiance over the lower hemisphere projects onto the zonal
+  // terms alone: their integrals over it, by the midpoint rule in theta.
+  constexpr int kTheta = 256;
+  double zonal[9] = {};
+  for (int t = 0; t < kTheta; ++t) {
+    const double theta = glm::half_pi<double>() * (1.0 + (t + 0.5) / kTheta);
+    const glm::vec3 d(float(std::sin(theta)), float(std::cos(theta)), 0.0f);
+    const double weight = glm::two_pi<double>() * std::sin(theta) * glm::half_pi<double>() / kTheta;
+    for (uint32_t k : {0u, 1u, 6u}) zonal[k] += weight * double(shader::sh9Basis(k, d));
+  }
+  shader::Sh9 sh{};
+  for (uint32_t k = 0; k < 9; ++k) sh.c[k] = glm::vec4(radiance * float(zonal[k]), 0.0f);
+  return sh;
+}
+
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, uint32_t width, uint32_t height) {
   return frameUniforms(scene, proceduralSkyLight(scene.sky), width, height);
 }
@@ -66,7 +106,8 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.sunIrradiance = glm::vec4(light.sunIrradiance, 0.0f);
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
   u.inverseProjection = glm::inverse(u.projection);
-  u.skySh = light.skySh;
+  const shader::Sh9 ground = groundLightSh9(scene, light);
+  for (uint32_t k = 0; k < 9; ++k) u.skySh.c[k] = light.skySh.c[k] + ground.c[k];
   // y: the uniform index base, 0 (shared/sun_shadow.h).
   u.sampling = glm::vec4(filterWidth, 0.0f, 0.0f, 0.0f);
   return u;

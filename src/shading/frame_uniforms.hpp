@@ -20,9 +20,18 @@ bool boxesCastShadows(const scene::Scene& scene);
 // walls; nothing with render.shadows off.
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
 
+// The light the scene's ground sends up, as SH9 of a uniform radiance below
+// the horizon: the ground's mean albedo near the pool (its hole left out)
+// times its irradiance from the sun (unshadowed) and the sky, over pi.
+// What lights the undersides of objects and the walls' lower parts; it adds
+// nothing to a surface facing up (SH9's bands 0-2 of a lower hemisphere
+// cancel there).
+shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light);
+
 // Fills the per-frame uniforms but for the shadows (none: the caller's to
 // set, from shadowCasters): camera matrices for a width x height image and
-// the light (the procedural sky's, when none is given). `pixelOffset` moves
+// the light (the procedural sky's, when none is given): the sun, and the
+// sky above the horizon with the ground's light below it (groundLightSh9). `pixelOffset` moves
 // where each pixel samples the image, in pixels from its centre (x right, y
 // down): the jitter of an anti-aliased frame's samples; `filterWidth` the
 // width in pixels textures are filtered over (FrameUniforms::sampling).

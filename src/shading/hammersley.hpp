@@ -43,4 +43,19 @@ inline glm::vec3 cosineHemisphere(glm::vec2 u) {
   return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
 }
 
+// The orthonormal frame about unit n: any two unit tangents completing it.
+inline void tangentFrame(glm::vec3 n, glm::vec3& t, glm::vec3& b) {
+  const glm::vec3 helper = std::abs(n.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+  t = glm::normalize(glm::cross(helper, n));
+  b = glm::cross(n, t);
+}
+
+// cosineHemisphere's direction about unit n instead of +z.
+inline glm::vec3 cosineAbout(glm::vec3 n, glm::vec2 u) {
+  glm::vec3 t, b;
+  tangentFrame(n, t, b);
+  const glm::vec3 local = cosineHemisphere(u);
+  return local.x * t + local.y * b + local.z * n;
+}
+
 }  // namespace tp::render

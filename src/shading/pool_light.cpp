@@ -1,0 +1,295 @@
+#include "shading/pool_light.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <thread>
+
+#include "shading/hammersley.hpp"
+#include "shared/noise.h"
+#include "shared/pool_light.h"
+
+namespace tp::render {
+namespace {
+
+// The sky straight through the window is summed over the upper hemisphere
+// cut in equal solid angles: this many bands of the cosine from the zenith,
+// and of azimuth; each holds the sky's mean over kSkySubsamples^2 points, so
+// that a bright blob smaller than a bin still brings its light.
+constexpr uint32_t kSkyBands = 16, kSkyAzimuths = 64, kSkySubsamples = 4;
+// Cosine-weighted directions from each texel for the light that comes
+// back: the same Hammersley set for every texel, so that the error varies
+// smoothly from texel to texel rather than as noise.
+constexpr uint32_t kDirections = 128;
+// Diffuse bounces after the texel's own at most; each keeps at most the
+// surfaces' albedo (0.6-0.7 in the scenes), so what is left past them is
+// under 1% of the light.
+constexpr uint32_t kBounces = 8;
+// A path whose throughput falls under this has nothing left to bring.
+constexpr float kNegligible = 1e-3f;
+// How far a continued ray starts off the surface it leaves, in metres.
+constexpr float kOffset = 1e-4f;
+// How far above the floor's mesh a wall texel's point is taken where the
+// floor rises over it: the texel is read by the floor's edge.
+constexpr float kAboveFloor = 0.02f;
+
+class PoolLightBake {
+ public:
+  PoolLightBake(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices, const SkyRadiance& sky,
+                const PoolLightSun& sun)
+      : pool_(pool), vertices_(floorVertices.data()), sky_(sky), sun_(sun) {
+    for (uint32_t band = 0; band < kSkyBands; ++band) {
+      for (uint32_t a = 0; a < kSkyAzimuths; ++a) {
+        glm::vec3 sum(0.0f);
+        for (uint32_t k = 0; k < kSkySubsamples * kSkySubsamples; ++k) {
+          const float up = (float(band) + (float(k / kSkySubsamples) + 0.5f) / kSkySubsamples) / kSkyBands;
+          const float phi = (float(a) + (float(k % kSkySubsamples) + 0.5f) / kSkySubsamples) / kSkyAzimuths;
+          sum += sky(skyDirection(up, phi));
+        }
+        const float solidAngle = glm::two_pi<float>() / float(kSkyBands * kSkyAzimuths);
+        const glm::vec3 centre = skyDirection((float(band) + 0.5f) / kSkyBands, (float(a) + 0.5f) / kSkyAzimuths);
+        skyBins_.push_back({centre, sum * (solidAngle / float(kSkySubsamples * kSkySubsamples))});
+      }
+    }
+    frame_.sunDirection = glm::vec4(sun.direction, 0.0f);
+    frame_.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
+    ior_ = pool.water.y;
+    level_ = pool.water.x;
+    extinction_ = glm::vec3(pool.extinction);
+  }
+
+  // The irradiance at texel k (shared/pool_light.h's order).
+  glm::vec3 texel(uint32_t k) const {
+    glm::vec3 p, n;
+    texelPoint(k, p, n);
+    p += kOffset * n;
+    glm::vec3 sum(0.0f);
+    for (uint32_t i = 0; i < kDirections; ++i) {
+      const glm::vec3 d = cosineAbout(n, hammersley(i, kDirections));
+      sum += incoming(p, d, shader::hashUint(k * kDirections + i));
+    }
+    return window(p, n) + sum * (glm::pi<float>() / float(kDirections));
+  }
+
+  // How far along d from o the water's surface is, from below (1e30 going
+  // down).
+  float toSurface(glm::vec3 o, glm::vec3 d) const { return d.y > 0.0f ? (level_ - o.y) / d.y : 1e30f; }
+
+  // A ray from o along d meeting the surface's underside `distance` on:
+  // absorbed on the way, the sky through Snell's window added to `radiance`
+  // (n^2 its radiance times Fresnel's transmission, where the line out
+  // clears the rim) when `withSky`, and turned down, the reflected share
+  // (all of it outside the window) left in `throughput`.
+  void underside(glm::vec3& o, glm::vec3& d, float distance, glm::vec3& throughput, glm::vec3& radiance,
+                 bool withSky) const {
+    throughput *= glm::exp(-extinction_ * distance);
+    const glm::vec3 q = o + distance * d;
+    const float reflected = shader::fresnelDielectric(d.y, ior_, 1.0f);
+    if (withSky && reflected < 1.0f) {
+      const glm::vec3 air = glm::refract(d, glm::vec3(0.0f, -1.0f, 0.0f), ior_);
+      if (clearsTheRim(q, air)) radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * sky_(air);
+    }
+    throughput *= reflected;
+    d.y = -d.y;
+    o = q - glm::vec3(0.0f, kOffset, 0.0f);
+  }
+
+  // The albedo of the floor or wall `hit` at p.
+  glm::vec3 albedo(const shader::PoolHit& hit, glm::vec3 p) const {
+    return hit.floor
+               ? shader::groundAlbedo(pool_.tiles, glm::vec2(p.x, p.z), glm::vec2(0.0f))
+               : shader::poolWallAlbedo(pool_, shader::poolWallCoordinates(pool_, p, hit.normal), glm::vec2(0.0f));
+  }
+
+  // Whether a ray leaving the water's surface at q along `air` (upwards)
+  // clears the walls above the water: the sky, not the pool's own rim.
+  bool clearsTheRim(glm::vec3 q, glm::vec3 air) const {
+    const glm::vec2 walls = shader::poolWallDistances(pool_, q, air);
+    return q.y + std::min(walls.x, walls.y) * air.y >= pool_.box.y;
+  }
+
+  // Whether the sun reaches p under the water through the flat surface:
+  // its refracted line up to the surface meets no wall, nor does its line
+  // on in the air.
+  bool sunReaches(glm::vec3 p) const {
+    const glm::vec3 toSun = sun_.direction;
+    if (toSun.y <= 0.0f) return false;
+    const glm::vec3 up = -glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+    const float toSurface = (level_ - p.y) / up.y;
+    const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
+    if (std::min(walls.x, walls.y) < toSurface) return false;
+    return clearsTheRim(p + toSurface * up, toSun);
+  }
+
+ private:
+  struct SkyBin {
+    glm::vec3 direction;  // its centre, in the air
+    glm::vec3 light;      // the sky's mean radiance over it times its solid angle
+  };
+
+  // The upward direction at `up` (the cosine from the zenith) and `phi`
+  // (turns of azimuth).
+  static glm::vec3 skyDirection(float up, float phi) {
+    const float across = std::sqrt(std::max(0.0f, 1.0f - up * up)), a = glm::two_pi<float>() * phi;
+    return {across * std::cos(a), up, across * std::sin(a)};
+  }
+
+  // The sky straight through the flat surface onto p with normal n: over
+  // the air's directions, Fresnel's transmission, the absorption along the
+  // refracted line, and the solid angle the water compresses (cos in the
+  // air over cos in the water; the radiance's n^2 and the solid angle's
+  // 1 / n^2 cancel), where the line clears the walls.
+  glm::vec3 window(glm::vec3 p, glm::vec3 n) const {
+    glm::vec3 sum(0.0f);
+    for (const SkyBin& bin : skyBins_) {
+      const glm::vec3 up = -glm::refract(-bin.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+      const float facing = glm::dot(n, up);
+      if (facing <= 0.0f) continue;
+      const float toSurface = (level_ - p.y) / up.y;
+      const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
+      if (std::min(walls.x, walls.y) < toSurface || !clearsTheRim(p + toSurface * up, bin.direction)) continue;
+      const float transmitted = 1.0f - shader::fresnelDielectric(bin.direction.y, 1.0f, ior_);
+      sum += bin.light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-extinction_ * toSurface);
+    }
+    return sum;
+  }
+
+  // The floor under xz: the mesh met by a ray down from the rest level.
+  shader::PoolHit floorUnder(glm::vec2 xz) const {
+    const float inside = pool_.box.x - kOffset;
+    const glm::vec3 from(std::clamp(xz.x, -inside, inside), level_, std::clamp(xz.y, -inside, inside));
+    return shader::tracePool(pool_, from, glm::vec3(0.0f, -1.0f, 0.0f), vertices_);
+  }
+
+  void texelPoint(uint32_t k, glm::vec3& p, glm::vec3& n) const {
+    const float half = pool_.box.x;
+    constexpr uint32_t floorTexels = TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR;
+    if (k < floorTexels) {
+      const glm::vec2 uv((float(k % TP_POOL_LIGHT_FLOOR) + 0.5f) / TP_POOL_LIGHT_FLOOR,
+                         (float(k / TP_POOL_LIGHT_FLOOR) + 0.5f) / TP_POOL_LIGHT_FLOOR);
+      const shader::PoolHit floor = floorUnder((2.0f * uv - 1.0f) * half);
+      p = floor.position;
+      n = floor.normal;
+      return;
+    }
+    const uint32_t w = (k - floorTexels) / (TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN);
+    const uint32_t cell = (k - floorTexels) % (TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN);
+    const float along = (2.0f * (float(cell % TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_ALONG - 1.0f) * half;
+    const float down = (float(cell / TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_DOWN;
+    const float y = level_ - down * (level_ - pool_.terrain.z);
+    const float side = w % 2 == 0 ? -half : half;
+    n = w < 2 ? glm::vec3(w == 0 ? 1.0f : -1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 0.0f, w == 2 ? 1.0f : -1.0f);
+    p = w < 2 ? glm::vec3(side, y, along) : glm::vec3(along, y, side);
+    p.y = std::max(p.y, floorUnder(glm::vec2(p.x, p.z)).position.y + kAboveFloor);
+  }
+
+  // The radiance reaching o along -d (d: the way the path goes) from
+  // everything but the sun and the sky straight through the surface
+  // (window's).
+  glm::vec3 incoming(glm::vec3 o, glm::vec3 d, uint32_t seed) const {
+    glm::vec3 radiance(0.0f), throughput(1.0f);
+    uint32_t state = seed;
+    auto uniform = [&] {
+      state = shader::hashUint(state);
+      return float(state >> 8) * (1.0f / 16777216.0f);
+    };
+    for (uint32_t bounce = 0; bounce <= kBounces;) {
+      const shader::PoolHit hit = shader::tracePool(pool_, o, d, vertices_);
+      const float up = toSurface(o, d);
+      if (up < hit.distance) {
+        underside(o, d, up, throughput, radiance, bounce > 0);
+      } else {
+        throughput *= glm::exp(-extinction_ * hit.distance);
+        const glm::vec3 p = hit.position + kOffset * hit.normal;
+        throughput *= albedo(hit, p);
+        if (sunReaches(p))
+          radiance += throughput / glm::pi<float>() * shader::sunThroughFlatWater(pool_, frame_, p, hit.normal);
+        d = cosineAbout(hit.normal, glm::vec2(uniform(), uniform()));
+        o = p;
+        ++bounce;
+      }
+      if (std::max({throughput.x, throughput.y, throughput.z}) < kNegligible) break;
+    }
+    return radiance;
+  }
+
+  shader::PoolParams pool_;
+  const glm::vec4* vertices_;
+  const SkyRadiance& sky_;
+  std::vector<SkyBin> skyBins_;
+  PoolLightSun sun_;
+  shader::FrameUniforms frame_{};
+  float ior_ = 1.0f, level_ = 0.0f;
+  glm::vec3 extinction_{0.0f};
+};
+
+// Directions over the sphere for the light around: a Fibonacci lattice.
+constexpr uint32_t kAroundDirections = 4096;
+
+shader::Sh9 lightAround(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorAndLight,
+                        const SkyRadiance& sky, const PoolLightSun& sun) {
+  const glm::vec4* data = floorAndLight.data();
+  shader::FrameUniforms frame{};
+  frame.sunDirection = glm::vec4(sun.direction, 0.0f);
+  frame.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
+  const float level = pool.water.x;
+  const glm::vec3 centre(0.0f, level - 0.5f * (level - (pool.box.y - pool.box.z)), 0.0f);
+  const PoolLightBake bake(pool, floorAndLight, sky, sun);
+  glm::dvec3 sum[9] = {};
+  for (uint32_t i = 0; i < kAroundDirections; ++i) {
+    const float y = 1.0f - 2.0f * (float(i) + 0.5f) / kAroundDirections;
+    const float r = std::sqrt(std::max(0.0f, 1.0f - y * y)), a = 2.39996323f * float(i);  // the golden angle
+    const glm::vec3 d(r * std::cos(a), y, r * std::sin(a));
+    glm::vec3 o = centre, dir = d, radiance(0.0f), throughput(1.0f);
+    // The first surface met, and once more past the underside's reflection.
+    for (int leg = 0; leg < 2; ++leg) {
+      const shader::PoolHit hit = shader::tracePool(pool, o, dir, data);
+      const float up = bake.toSurface(o, dir);
+      if (up < hit.distance) {
+        bake.underside(o, dir, up, throughput, radiance, true);
+        continue;
+      }
+      throughput *= glm::exp(-glm::vec3(pool.extinction) * hit.distance);
+      const glm::vec3 p = hit.position + kOffset * hit.normal;
+      glm::vec3 irradiance = shader::poolLightAt(pool, p, hit.normal, data);
+      if (bake.sunReaches(p)) irradiance += shader::sunThroughFlatWater(pool, frame, p, hit.normal);
+      radiance += throughput * bake.albedo(hit, p) / glm::pi<float>() * irradiance;
+      break;
+    }
+    for (uint32_t k = 0; k < 9; ++k) sum[k] += glm::dvec3(radiance) * double(shader::sh9Basis(k, d));
+  }
+  shader::Sh9 sh{};
+  for (uint32_t k = 0; k < 9; ++k)
+    sh.c[k] = glm::vec4(glm::vec3(sum[k] * (4.0 * glm::pi<double>() / kAroundDirections)), 0.0f);
+  return sh;
+}
+
+}  // namespace
+
+std::vector<glm::vec4> poolLightTexels(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices,
+                                       const SkyRadiance& sky, const PoolLightSun& sun) {
+  const PoolLightBake bake(pool, floorVertices, sky, sun);
+  std::vector<glm::vec4> texels(TP_POOL_LIGHT_TEXELS);
+  std::atomic<uint32_t> next{0};
+  auto work = [&] {
+    for (uint32_t k = next++; k < texels.size(); k = next++) texels[k] = glm::vec4(bake.texel(k), 0.0f);
+  };
+  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  for (std::thread& t : threads) t = std::thread(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  return texels;
+}
+
+PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
+                        const PoolLightSun& sun) {
+  const std::vector<glm::vec4> texels = poolLightTexels(pool, floorVertices, sky, sun);
+  PoolLight light;
+  light.floorAndLight = std::move(floorVertices);
+  light.floorAndLight.insert(light.floorAndLight.end(), texels.begin(), texels.end());
+  light.around = lightAround(pool, light.floorAndLight, sky, sun);
+  return light;
+}
+
+}  // namespace tp::render

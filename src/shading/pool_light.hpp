@@ -1,0 +1,49 @@
+#pragma once
+#include <functional>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "shared/pool.h"
+
+namespace tp::render {
+
+// The sky's radiance along a unit direction, without the sun's disc.
+using SkyRadiance = std::function<glm::vec3(glm::vec3)>;
+
+// The sun as the bake takes it: where it is and its irradiance on a surface
+// facing it (none for an image sky).
+struct PoolLightSun {
+  glm::vec3 direction{0.0f, 1.0f, 0.0f};
+  glm::vec3 irradiance{0.0f};
+};
+
+// The pool's static light under the water (shared/pool_light.h): for each
+// of its TP_POOL_LIGHT_TEXELS texels, the irradiance from everything but the
+// sun straight through the surface, by paths through the pool as it stands
+// (flat water at its rest level, the walls, the floor's mesh, no objects):
+// the first direction from a fixed cosine-weighted set, the surface's
+// Fresnel split followed both ways, the sun drawn at every later bounce.
+// `floorVertices`: the pool's floor mesh (PoolModel). Deterministic: the
+// raster and the model tracer bake the same numbers.
+std::vector<glm::vec4> poolLightTexels(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices,
+                                       const SkyRadiance& sky, const PoolLightSun& sun);
+
+// What the pool's bake gives the shaders.
+struct PoolLight {
+  // The floor's vertices followed by the baked light: the buffer the
+  // shaders read both from (shared/pool_light.h).
+  std::vector<glm::vec4> floorAndLight;
+  // The light around an object under the water (PoolParams::around): the
+  // radiance reaching the pool's centre, half way down, from every
+  // direction, in SH9. Each direction's ray meets the sky through the
+  // surface, or the floor or a wall, whose light is the baked one and the
+  // sun's through the flat surface where it reaches, absorbed on the way;
+  // reflected off the surface's underside once on.
+  shader::Sh9 around{};
+};
+
+// The texels and the light around, for the pool's parameters and floor.
+PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
+                        const PoolLightSun& sun);
+
+}  // namespace tp::render
