@@ -109,7 +109,7 @@ class Comparison:
         self.width, self.height = (int(x) for x in args.size.lower().split("x"))
         self.times = {}
         self.env = tidepool_env()
-        self.cached = False
+        self.cycles_sources = []  # (key, "kept" | "cached" | "rendered") of each Cycles frame, in order
 
     def path(self, name):
         return os.path.join(self.out, name)
@@ -178,14 +178,18 @@ class Comparison:
         return h.hexdigest()[:24]
 
     def cycles(self, samples, seed, name):
+        key = self.cycles_key(samples, seed)
         cached = None
+        # Kept frames first (read only: the repository's), then the cache this run may write.
+        for folder, source in ((self.args.cycles_frames, "kept"), (self.args.cycles_cache, "cached")):
+            if folder and os.path.exists(os.path.join(folder, key + ".exr")):
+                shutil.copyfile(os.path.join(folder, key + ".exr"), self.path(name))
+                self.cycles_sources.append((key, source))
+                return read_exr(self.path(name)), 0.0, 0.0
         if self.args.cycles_cache:
             os.makedirs(self.args.cycles_cache, exist_ok=True)
-            cached = os.path.join(self.args.cycles_cache, self.cycles_key(samples, seed) + ".exr")
-            if os.path.exists(cached):
-                shutil.copyfile(cached, self.path(name))
-                self.cached = True
-                return read_exr(self.path(name)), 0.0, 0.0
+            cached = os.path.join(self.args.cycles_cache, key + ".exr")
+        self.cycles_sources.append((key, "rendered"))
         cmd = [self.args.blender, "-b", "--factory-startup", "--python-exit-code", "1",
                "--python", os.path.join(HERE, "render_cycles.py"), "--",
                "--glb", self.path("scene.glb"), "--scene", self.path("scene.json"),
@@ -245,7 +249,7 @@ class Comparison:
             "reference_noise_mean": None,
             "model_vs_cycles": None if self.model_frame is None else self.err(self.model_frame, self.cycles_mean),
             "times": self.times,
-            "cycles_cached": self.cached,
+            "cycles_sources": self.cycles_sources,
             "ladder": self.ladder,
         }
         if len(self.reference_frames) == 2:
@@ -277,8 +281,8 @@ def print_figures(f, out=sys.stdout):
     w(f"  time: export {t['export']:.1f} s, raster {t['raster']:.1f} s, reference "
       + " + ".join(f"{x:.1f}" for x in t["reference"]) + " s, "
       + (f"reference-model {t['model']:.1f} s, " if "model" in t else "") + "Cycles "
-      + (" from the cache" if f.get("cycles_cached") else
-         " + ".join(f"{a:.1f} ({b:.1f} rendering)" for a, b in cyc) + " s"))
+      + " + ".join(f"{a:.1f} ({b:.1f} rendering)" if source == "rendered" else f"{source} {key}"
+                   for (a, b), (key, source) in zip(cyc, f["cycles_sources"])) + " s")
     if f["ladder"]:
         w(f"  {'run time against error':34s} {'wall s':>8s} {'render s':>9s} {'RMSE vs Cycles mean':>20s}")
         for k, wall, render, e in f["ladder"]:
@@ -308,6 +312,8 @@ def parse_args(argv=None):
                    help="Cycles at 1, 2, 4, ... samples against its converged frame (default on)")
     p.add_argument("--cycles-cache", help="keep Cycles' frames here, keyed by everything they depend on, and "
                    "take them from here when nothing changed (the reference's figures are always fresh)")
+    p.add_argument("--cycles-frames", help="Cycles' frames kept with the tests (tests/cycles/frames), keyed as "
+                   "the cache is: read only, looked at before the cache")
     p.add_argument("--model", action="store_true",
                    help="also `render --reference-model` (the raster's lighting model traced) against Cycles")
     p.add_argument("--json", help="also write the figures here")
