@@ -6,10 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace tp::test {
 
@@ -99,5 +102,28 @@ inline std::string expectUsageError(const std::string& args, const ScratchDir& d
 }
 
 inline void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Starts `tidepool args` in the background, waits (at most two minutes) for
+// the file `waitFor` to appear, sends it `signal` and waits for it to end:
+// a run stopped in the middle, as Ctrl-C or a farm's requeue stops it.
+inline ProcessResult runUntilSignalled(const std::string& args, const ScratchDir& dir, const std::string& waitFor,
+                                       int signal) {
+  const std::string command = std::string(TIDEPOOL_EXE) + " " + args + " >" + dir.file("out.txt") + " 2>" +
+                              dir.file("err.txt") + " </dev/null & p=$!; echo $p >" + dir.file("pid.txt") +
+                              "; wait $p; echo $? >" + dir.file("rc.txt");
+  std::thread run([&] { std::system(("bash -c '" + command + "'").c_str()); });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!std::filesystem::exists(waitFor) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(std::stoi(readText(dir.file("pid.txt"))), signal);
+  run.join();
+  ProcessResult r;
+  r.exitCode = std::stoi(readText(dir.file("rc.txt")));
+  r.out = readText(dir.file("out.txt"));
+  r.err = readText(dir.file("err.txt"));
+  for (const char* name : {"out.txt", "err.txt", "pid.txt", "rc.txt"}) std::filesystem::remove(dir.file(name));
+  return r;
+}
 
 }  // namespace tp::test

@@ -15,6 +15,7 @@
 #include "cli/number_checks.hpp"
 #include "cli/profile_table.hpp"
 #include "cli/render_sequence.hpp"
+#include "cli/sequence_run.hpp"
 #include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
@@ -100,10 +101,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                   "on its own machine")
       ->type_name("DIR")
       ->needs(frames);
-  cmd->add_flag("--resume", o.resume,
-                "With --frames: leave out the frames whose files are already there and whole (a run stopped or "
-                "split goes on where it ended)")
-      ->needs(frames);
+  addResumeOption(cmd, o.resume, frames);
   cmd->add_option("--out", o.outs,
                   "Output file, its format from its extension: .exr (linear RGBA and the AOVs) or .png (the "
                   "tonemapped 8-bit sRGB frame); give one of each for both; default render.exr; with --frames, a "
