@@ -77,9 +77,9 @@ inline int lineCount(const std::string& text) {
 
 // Runs a command that must fail cleanly (one line on stderr starting
 // "tidepool: error: ", an exit code that is neither 0 nor a crash, and the
-// scratch directory left as it was) and returns that line.
-inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
-                                      const std::vector<std::string>& filesBefore, const std::string& env = "") {
+// scratch directory left as it was) and returns what it gave.
+inline ProcessResult cleanFailure(const std::string& args, const ScratchDir& dir,
+                                  const std::vector<std::string>& filesBefore, const std::string& env = "") {
   ProcessResult r = runTidepool(args, dir, env);
   EXPECT_NE(r.exitCode, 0) << args;
   EXPECT_LT(r.exitCode, 128) << "crashed: " << args;
@@ -90,15 +90,21 @@ inline std::string expectCleanFailure(const std::string& args, const ScratchDir&
   auto before = filesBefore;
   std::sort(before.begin(), before.end());
   EXPECT_EQ(after, before) << "files left behind by: " << args;
-  return r.err;
+  return r;
+}
+
+// As cleanFailure; returns the line.
+inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
+                                      const std::vector<std::string>& filesBefore, const std::string& env = "") {
+  return cleanFailure(args, dir, filesBefore, env).err;
 }
 
 // A bad command line: as expectCleanFailure, with exit code 2.
 inline std::string expectUsageError(const std::string& args, const ScratchDir& dir,
                                     const std::vector<std::string>& filesBefore = {}) {
-  const std::string err = expectCleanFailure(args, dir, filesBefore);
-  EXPECT_EQ(runTidepool(args, dir).exitCode, 2) << args << "\n" << err;
-  return err;
+  const ProcessResult r = cleanFailure(args, dir, filesBefore);
+  EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+  return r.err;
 }
 
 inline void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }

@@ -223,7 +223,7 @@ void addTruthBench(CLI::App* bench, BenchTruthOptions& o) {
   CLI::App* truth = bench->add_subcommand(
       "truth", "The raster against the path-traced truth: error per scene and region beside each one's wall time");
   addListOption(truth, "--scenes", o.scenes, "Scene files to measure, comma-separated; default: the built-in scene",
-                CLI::Validator())
+                CLI::ExistingFile)
       ->type_name("PATH,...");
   addSizeOption(truth, o.resolution);
   truth->add_option("--frame", o.frame, "Frame number of each scene")->capture_default_str();
