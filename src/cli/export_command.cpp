@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <optional>
 
 #include "base/atomic_file.hpp"
@@ -89,11 +88,13 @@ int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF");
+      "export",
+      "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF; or the "
+      "water's heightfield as EXR (an EXR sequence with --frames), to displace a grid with in a DCC");
   addSceneSourceOptions(cmd, o.scene, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene");
   CLI::Option* frame = cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
                            ->capture_default_str()
-                           ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
+                           ->check(frameNumber());
   CLI::Option* frames = cmd->add_option("--frames", o.frames,
                                         "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
                             ->type_name("A-B")

@@ -46,7 +46,8 @@ int runRenderSequence(const RenderOptions& o) {
   }
   if (o.checkpointEvery > 0 && o.checkpointDir.empty()) throw UsageError("--checkpoint-every needs --checkpoint-dir");
   if (!o.checkpointDir.empty()) {
-    if (!std::filesystem::is_directory(o.checkpointDir)) {
+    // A folder not there yet is made with the first checkpoint.
+    if (std::filesystem::exists(o.checkpointDir) && !std::filesystem::is_directory(o.checkpointDir)) {
       throw UsageError("--checkpoint-dir " + o.checkpointDir + ": not a folder");
     }
     base::checkWritable((std::filesystem::path(o.checkpointDir) / "water.000000.json").string());
