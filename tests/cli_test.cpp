@@ -163,7 +163,7 @@ TEST(Cli, BadCommandLinesFailCleanly) {
 TEST(Cli, UnwritableOutputsFailCleanly) {
   ScratchDir dir;
   std::vector<std::string> none;
-  EXPECT_NE(expectCleanFailure("render --out /nonexistent-dir/x.exr", dir, none).find("does not exist"),
+  EXPECT_NE(expectCleanFailure("render --out /dev/null/x.exr", dir, none).find("/dev/null is not a folder"),
             std::string::npos);
   EXPECT_NE(expectUsageError("render --out " + dir.file("x.tiff"), dir, none).find("must be .exr or .png"),
             std::string::npos);
@@ -177,6 +177,24 @@ TEST(Cli, UnwritableOutputsFailCleanly) {
   // that is not special): the error is still one line and nothing is left.
   expectCleanFailure("render --width 8 --height 8 --out /proc/tidepool-test.exr", dir, {"taken.exr"});
   EXPECT_FALSE(std::filesystem::exists("/proc/tidepool-test.exr"));
+}
+
+// An output's folder that is not there is made, with those above it: for
+// --out, for the files of a sequence and for --checkpoint-dir; --help says so.
+TEST(Cli, OutputFoldersAreMadeWhenNotThere) {
+  ScratchDir dir;
+  ProcessResult r = runTidepool("render --size 8x8 --out " + dir.file("nodir/deeper/a.png"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("nodir/deeper/a.png")));
+  r = runTidepool("render --size 8x8 --frames 0-1 --checkpoint-every 1 --checkpoint-dir " + dir.file("int/ck") +
+                      " --out " + dir.file("seq/f.#.png"),
+                  dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("seq/f.1.png")));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("int/ck/water.000001.json")));
+  const ProcessResult help = runTidepool("render --help", dir);
+  EXPECT_NE(help.out.find("its folder made if it is not there"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("machine; made if it is not there"), std::string::npos) << help.out;
 }
 
 TEST(Cli, BadSceneFilesFailCleanly) {

@@ -65,7 +65,9 @@ TEST(CommandLine, BadValuesExitTwoInTheUsersWords) {
       {"render --width abc", "--width: abc is not a whole number"},
       {"render --width 0", "--width: 0 is outside 1 to 16384"},
       {"render --height -3", "--height: -3 is outside 1 to 16384"},
-      {"render --frame -1", "--frame: -1 is outside 0 to 4294967295"},
+      {"render --frame -1", "--frame: -1: a frame number is 0 or more"},
+      {"export --frame -1 --out x.obj", "--frame: -1: a frame number is 0 or more"},
+      {"bench water --frame -1", "--frame: -1: a frame number is 0 or more"},
       {"render --size 12x", "--size: 12x is not WxH with each side 1 to 16384"},
       {"render --size 10x10 --width 5", "--size 10x10: not with --width or --height"},
       {"render --profile --samples 4", "--profile times the passes of one frame: not with --samples 4"},
@@ -175,6 +177,14 @@ TEST(CommandLine, HelpCommandPrintsWhatHelpOptionsPrint) {
     EXPECT_EQ(help.out, runTidepool(std::string(command) + " --help", dir).out) << command;
     EXPECT_NE(help.out.find(std::string("Usage: tidepool ") + command), std::string::npos) << help.out;
   }
+}
+
+// `tidepool help` lists what export writes, the heightfield EXRs included.
+TEST(CommandLine, HelpSaysExportWritesHeightfieldSequences) {
+  ScratchDir dir;
+  const ProcessResult help = runTidepool("help", dir);
+  ASSERT_EQ(help.exitCode, 0) << help.err;
+  EXPECT_NE(help.out.find("water's heightfield as EXR (an EXR sequence with --frames)"), std::string::npos) << help.out;
 }
 
 TEST(CommandLine, VersionNamesTheCommitBuiltFrom) {

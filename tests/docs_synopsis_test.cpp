@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "help_text.hpp"
 #include "process.hpp"
 
 namespace tp::test {
@@ -33,21 +34,6 @@ struct Synopsis {
   std::string command;            // "render", "bench water"
   std::set<std::string> options;  // "--scene", "--width", ...
 };
-
-std::vector<std::string> splitLines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(line);
-  }
-  return lines;
-}
-
-size_t leadingSpaces(const std::string& line) {
-  const size_t first = line.find_first_not_of(' ');
-  return first == std::string::npos ? line.size() : first;
-}
 
 bool isBlank(const std::string& line) { return line.find_first_not_of(" \t") == std::string::npos; }
 
@@ -164,29 +150,6 @@ std::set<std::string> helpOptions(const std::string& help) {
   }
   for (const char* own : {"--help", "--help-all", "--version"}) options.erase(own);
   return options;
-}
-
-// The subcommands `--help` lists, under its "Subcommands:" heading (CLI11:
-// two spaces, the name, then the description).
-std::vector<std::string> helpSubcommands(const std::string& help) {
-  std::vector<std::string> names;
-  bool inList = false;
-  for (const std::string& line : splitLines(help)) {
-    if (!inList) {
-      std::string heading = line;
-      std::transform(heading.begin(), heading.end(), heading.begin(),
-                     [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); });
-      inList = heading == "subcommands:";
-      continue;
-    }
-    if (line.empty() || line.front() != ' ') break;  // the end of the list
-    if (leadingSpaces(line) != 2) continue;          // a description carried onto its own line
-    std::istringstream words(line);
-    std::string name;
-    words >> name;
-    names.push_back(name);
-  }
-  return names;
 }
 
 std::string join(const std::set<std::string>& words) {

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 #include <map>
 
+#include "assimp_meshes.hpp"
 #include "process.hpp"
 #include "scene/scene_file.hpp"
 #include "shading/objects_model.hpp"
@@ -32,17 +33,6 @@ std::map<std::string, Counts> defaultSceneCounts() {
           {"pool_floor", {size_t(f) * f, 2 * size_t(f - 1) * (f - 1)}},
           {"sphere0", {size_t(stacks + 1) * (slices + 1), 2 * size_t(stacks) * slices}},
           {"water", {size_t(n + 2) * (n + 2), 2 * size_t(n + 1) * (n + 1)}}};
-}
-
-// The meshes of a scene as Assimp reads them, by the name of the node holding each.
-std::map<std::string, const aiMesh*> meshesByName(const aiScene& scene) {
-  std::map<std::string, const aiMesh*> meshes;
-  const auto visit = [&](const aiNode& node, const auto& self) -> void {
-    for (unsigned k = 0; k < node.mNumMeshes; ++k) meshes[node.mName.C_Str()] = scene.mMeshes[node.mMeshes[k]];
-    for (unsigned c = 0; c < node.mNumChildren; ++c) self(*node.mChildren[c], self);
-  };
-  visit(*scene.mRootNode, visit);
-  return meshes;
 }
 
 glm::vec3 diffuse(const aiScene& scene, const aiMesh& mesh) {

@@ -125,7 +125,7 @@ TEST(ExportCli, BadOutputsFailCleanly) {
   EXPECT_NE(expectUsageError("export --out " + dir.file("scene.stl"), dir, files)
                 .find(".obj, .ply, .glb or .exr (a heightfield)"),
             std::string::npos);
-  expectCleanFailure("export --out /nonexistent-dir/scene.obj", dir, files);
+  expectCleanFailure("export --out /dev/null/scene.obj", dir, files);
   expectCleanFailure("export", dir, files);
   EXPECT_NE(expectCleanFailure("export --scene " + dir.file("broken.json") + " --out " + dir.file("x.obj"), dir, files)
                 .find("water.grid"),
@@ -236,7 +236,7 @@ TEST(ExportCli, BadSequencesAreRefused) {
   expectUsageError("export --frame 1 --frames 0-2 --out " + pattern, dir);
   EXPECT_NE(expectUsageError("export --frames 0-2 --out " + dir.file("pool.####.fbx"), dir).find(".ply"),
             std::string::npos);
-  expectCleanFailure("export --frames 0-2 --out /nonexistent-dir/pool.####.obj", dir, {});
+  expectCleanFailure("export --frames 0-2 --out /dev/null/pool.####.obj", dir, {});
 }
 
 }  // namespace tp::test

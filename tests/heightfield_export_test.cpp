@@ -1,12 +1,17 @@
 // `export --out PATH.exr`: the water as a heightfield, against the water the
 // simulation gives for that frame in this process and the normals the
-// renderer shades it with.
+// renderer shades it with, and against the exported mesh's water looked up
+// in it by the mesh's own texture coordinates.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
+#include <assimp/postprocess.h>
 
+#include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cmath>
 
+#include "assimp_meshes.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
@@ -58,6 +63,41 @@ TEST(HeightfieldExportCli, RefusesAPoolWithoutWater) {
                 .find("a heightfield is the water's"),
             std::string::npos);
   EXPECT_NE(expectUsageError("export --out " + dir.file("h.tif"), dir).find(".exr (a heightfield)"), std::string::npos);
+}
+
+// A DCC displaces a mesh by an image at the mesh's UVs: u right, v up, and
+// row 0 the top of the image. Every water vertex of the OBJ and the glTF,
+// looked up so in the EXR of the same frame (the nearest pixel), finds its
+// own height: the image is not mirrored against the mesh.
+TEST(HeightfieldExportCli, MeshUvsFindEachVertexsHeightInTheExr) {
+  ScratchDir dir;
+  const std::string frame = "export --set water.grid=32 --frame 30 --out ";
+  for (const char* name : {"h.exr", "m.obj", "m.glb"}) {
+    const ProcessResult r = runTidepool(frame + dir.file(name), dir);
+    ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+  }
+  const io::FloatImage image = io::readImage(dir.file("h.exr"));
+  const uint32_t n = image.width;
+  const auto pixel = [&](float t) { return std::clamp(uint32_t(std::max(t, 0.0f) * float(n)), 0u, n - 1); };
+  for (const char* name : {"m.obj", "m.glb"}) {
+    SCOPED_TRACE(name);
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(dir.file(name), aiProcess_JoinIdenticalVertices);
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    const aiMesh* water = meshesByName(*scene).at("water");
+    ASSERT_TRUE(water->HasTextureCoords(0));
+    float low = 1e9f, high = -1e9f, worst = 0.0f;
+    for (unsigned k = 0; k < water->mNumVertices; ++k) {
+      const aiVector3D uv = water->mTextureCoords[0][k];
+      const uint32_t column = pixel(uv.x), row = pixel(1.0f - uv.y);
+      const float y = water->mVertices[k].y;
+      worst = std::max(worst, std::abs(image.pixels[4 * (size_t(row) * n + column)] - y));
+      low = std::min(low, y);
+      high = std::max(high, y);
+    }
+    EXPECT_GT(high - low, 1e-3f) << "flat water would not see a mirrored image";
+    EXPECT_LT(worst, 1e-6f) << "of waves " << high - low << " m high";
+  }
 }
 
 }  // namespace tp::test

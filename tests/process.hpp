@@ -6,10 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace tp::test {
 
@@ -74,9 +77,9 @@ inline int lineCount(const std::string& text) {
 
 // Runs a command that must fail cleanly (one line on stderr starting
 // "tidepool: error: ", an exit code that is neither 0 nor a crash, and the
-// scratch directory left as it was) and returns that line.
-inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
-                                      const std::vector<std::string>& filesBefore, const std::string& env = "") {
+// scratch directory left as it was) and returns what it gave.
+inline ProcessResult cleanFailure(const std::string& args, const ScratchDir& dir,
+                                  const std::vector<std::string>& filesBefore, const std::string& env = "") {
   ProcessResult r = runTidepool(args, dir, env);
   EXPECT_NE(r.exitCode, 0) << args;
   EXPECT_LT(r.exitCode, 128) << "crashed: " << args;
@@ -87,17 +90,46 @@ inline std::string expectCleanFailure(const std::string& args, const ScratchDir&
   auto before = filesBefore;
   std::sort(before.begin(), before.end());
   EXPECT_EQ(after, before) << "files left behind by: " << args;
-  return r.err;
+  return r;
+}
+
+// As cleanFailure; returns the line.
+inline std::string expectCleanFailure(const std::string& args, const ScratchDir& dir,
+                                      const std::vector<std::string>& filesBefore, const std::string& env = "") {
+  return cleanFailure(args, dir, filesBefore, env).err;
 }
 
 // A bad command line: as expectCleanFailure, with exit code 2.
 inline std::string expectUsageError(const std::string& args, const ScratchDir& dir,
                                     const std::vector<std::string>& filesBefore = {}) {
-  const std::string err = expectCleanFailure(args, dir, filesBefore);
-  EXPECT_EQ(runTidepool(args, dir).exitCode, 2) << args << "\n" << err;
-  return err;
+  const ProcessResult r = cleanFailure(args, dir, filesBefore);
+  EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+  return r.err;
 }
 
 inline void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Starts `tidepool args` in the background, waits (at most two minutes) for
+// the file `waitFor` to appear, sends it `signal` and waits for it to end:
+// a run stopped in the middle, as Ctrl-C or a farm's requeue stops it.
+inline ProcessResult runUntilSignalled(const std::string& args, const ScratchDir& dir, const std::string& waitFor,
+                                       int signal) {
+  const std::string command = std::string(TIDEPOOL_EXE) + " " + args + " >" + dir.file("out.txt") + " 2>" +
+                              dir.file("err.txt") + " </dev/null & p=$!; echo $p >" + dir.file("pid.txt") +
+                              "; wait $p; echo $? >" + dir.file("rc.txt");
+  std::thread run([&] { std::system(("bash -c '" + command + "'").c_str()); });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!std::filesystem::exists(waitFor) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(std::stoi(readText(dir.file("pid.txt"))), signal);
+  run.join();
+  ProcessResult r;
+  r.exitCode = std::stoi(readText(dir.file("rc.txt")));
+  r.out = readText(dir.file("out.txt"));
+  r.err = readText(dir.file("err.txt"));
+  for (const char* name : {"out.txt", "err.txt", "pid.txt", "rc.txt"}) std::filesystem::remove(dir.file(name));
+  return r;
+}
 
 }  // namespace tp::test

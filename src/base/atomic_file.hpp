@@ -9,8 +9,9 @@ namespace tp::base {
 // uncommitted temporary.
 class AtomicFile {
  public:
-  // Throws when the directory does not exist or is not writable, or when the
-  // target exists and is a directory.
+  // Makes the target's folder (and those above it) when they are not there.
+  // Throws when that folder cannot be made or written, or when the target
+  // exists and is a directory.
   explicit AtomicFile(std::string target);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -27,7 +28,9 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-// Throws when a file could not be created at `path` (checked before long work starts).
+// Throws when a file could not be created at `path` (checked before long work
+// starts): a folder not there yet passes when the nearest one above it that is
+// there is a folder we may write in (AtomicFile makes the rest).
 void checkWritable(const std::string& path);
 
 // Whether `path` ends in `extension` (".exr", ".png"), case-insensitive.

@@ -115,7 +115,7 @@ void addWaterBench(CLI::App* bench, BenchWaterOptions& o) {
                                           "error from the raster's model traced on the CPU");
   addSceneSourceOptions(water, o.scene, "Scene file (JSON); default: the built-in scene");
   addSizesOption(water, o.resolutions);
-  water->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
+  water->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str()->check(frameNumber());
   water->add_option("--samples", o.samples, "Samples per pixel of the model traced")
       ->capture_default_str()
       ->check(inRange(1u, 4096u));
@@ -131,7 +131,7 @@ void addSsaoBench(CLI::App* bench, BenchSsaoOptions& o) {
       "ssao", "SSAO settings and presets on one frame: GPU ms of the AO passes against error from ray-traced AO");
   addSceneSourceOptions(ssao, o.scene, "Scene file (JSON); default: the built-in scene");
   addSizeOption(ssao, o.resolution);
-  ssao->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str();
+  ssao->add_option("--frame", o.frame, "Frame of the water to render")->capture_default_str()->check(frameNumber());
   ssao->add_option("--repeats", o.repeats, "Timed frames per case; the median is reported")
       ->capture_default_str()
       ->check(inRange(1u, 1000u));
@@ -223,10 +223,10 @@ void addTruthBench(CLI::App* bench, BenchTruthOptions& o) {
   CLI::App* truth = bench->add_subcommand(
       "truth", "The raster against the path-traced truth: error per scene and region beside each one's wall time");
   addListOption(truth, "--scenes", o.scenes, "Scene files to measure, comma-separated; default: the built-in scene",
-                CLI::Validator())
+                CLI::ExistingFile)
       ->type_name("PATH,...");
   addSizeOption(truth, o.resolution);
-  truth->add_option("--frame", o.frame, "Frame number of each scene")->capture_default_str();
+  truth->add_option("--frame", o.frame, "Frame number of each scene")->capture_default_str()->check(frameNumber());
   truth->add_option("--samples", o.samples, "Paths per pixel of the truth")
       ->capture_default_str()
       ->check(inRange(1u, 65536u));

@@ -54,6 +54,7 @@ void saveCheckpoint(const std::string& dir, const sim::WaterCheckpoint& checkpoi
 }
 
 std::optional<sim::WaterCheckpoint> latestCheckpoint(const std::string& dir, uint32_t atMost, uint64_t fingerprint) {
+  if (!std::filesystem::exists(dir)) return std::nullopt;  // made with the first checkpoint
   std::optional<uint32_t> best;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {

@@ -1,17 +1,21 @@
 #include "cli/export_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
-#include <limits>
+#include <filesystem>
 #include <optional>
 
 #include "base/atomic_file.hpp"
 #include "cli/frame_sequence.hpp"
 #include "cli/gpu_session.hpp"
 #include "cli/heightfield_output.hpp"
+#include "cli/interrupt_guard.hpp"
 #include "cli/number_checks.hpp"
 #include "cli/sequence_progress.hpp"
+#include "cli/sequence_run.hpp"
 #include "cli/usage_error.hpp"
 #include "io/mesh_io.hpp"
+#include "io/obj_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "shading/shaded_meshes.hpp"
 #include "sim/water_scene.hpp"
@@ -34,27 +38,48 @@ std::string writeFrame(const scene::Scene& scene, const sim::WaterState* water, 
   return std::to_string(triangles) + " triangles";
 }
 
+// Whether a frame's file is there whole: a heightfield readable at the
+// grid's size; a mesh file there (each is renamed into place once written),
+// an OBJ with its .mtl.
+bool alreadyWritten(const std::string& path, const scene::Scene& scene) {
+  if (isHeightfieldOutput(path)) return imageIsWhole(path, scene.water.grid, scene.water.grid);
+  const bool obj = base::hasExtension(path, ".obj");
+  return std::filesystem::is_regular_file(path) && (!obj || std::filesystem::is_regular_file(io::mtlPathFor(path)));
+}
+
 int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange range) {
-  SequenceProgress progress(range.count(), range.count());
+  const std::vector<uint32_t> todo = framesToWrite(
+      range, o.resume, [&](uint32_t f) { return alreadyWritten(framePath(o.out, f), scene); }, "export");
+  if (todo.empty()) return 0;
+  InterruptGuard interrupts;
+  SequenceProgress progress(uint32_t(todo.size()), range.count());
+  uint32_t written = 0;
+  // Writes frame `frame` if it is still to write; returns whether to go on:
+  // a signal ends the run after the frame being written, never inside one.
   const auto write = [&](uint32_t frame, const sim::WaterState* water) {
-    const std::string path = framePath(o.out, frame);
-    writeFrame(scene, water, frame, path);
-    progress.rendered(frame, path);
+    if (InterruptGuard::received()) return false;
+    if (std::binary_search(todo.begin(), todo.end(), frame)) {
+      const std::string path = framePath(o.out, frame);
+      writeFrame(scene, water, frame, path);
+      ++written;
+      progress.rendered(frame, path);
+    }
+    return InterruptGuard::received() == 0;
   };
   int exitCode = 0;
   if (scene.water.enabled) {
-    // One run of the water through the range, each frame written as it is reached.
+    // One run of the water to the last frame to write, each frame written as it is reached.
     GpuSession session(o.validate, o.device);
-    sim::simulateWaterFrames(session.context(), scene, range.first, range.last,
-                             [&](uint32_t frame, const sim::WaterState& water) { write(frame, &water); });
+    sim::simulateWaterFrames(session.context(), scene, todo.front(), todo.back(),
+                             [&](uint32_t frame, const sim::WaterState& water) { return write(frame, &water); });
     exitCode = session.finish();
   } else {
-    for (uint32_t frame = range.first;; ++frame) {
-      write(frame, nullptr);
-      if (frame == range.last) break;
+    for (const uint32_t frame : todo) {
+      if (!write(frame, nullptr)) break;
     }
   }
   progress.finish();
+  if (InterruptGuard::received()) return reportStop("export", written, todo.size(), "export");
   std::printf("wrote frames %u-%u to %s\n", range.first, range.last, o.out.c_str());
   return exitCode;
 }
@@ -63,14 +88,18 @@ int exportSequence(const ExportOptions& o, const scene::Scene& scene, FrameRange
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "export", "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF");
+      "export",
+      "Write the scene's triangles (water included) at a frame, or a range of frames, as OBJ, PLY or glTF; or the "
+      "water's heightfield as EXR (an EXR sequence with --frames), to displace a grid with in a DCC");
   addSceneSourceOptions(cmd, o.scene, "Scene file (JSON, see docs/scene-files.md); default: the built-in scene");
   CLI::Option* frame = cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
                            ->capture_default_str()
-                           ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
-  cmd->add_option("--frames", o.frames, "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
-      ->type_name("A-B")
-      ->excludes(frame);
+                           ->check(frameNumber());
+  CLI::Option* frames = cmd->add_option("--frames", o.frames,
+                                        "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
+                            ->type_name("A-B")
+                            ->excludes(frame);
+  addResumeOption(cmd, o.resume, frames);
   cmd->add_option("--out", o.out,
                   "Output .obj (with its .mtl beside it), .ply or .glb; or .exr: the water alone as a heightfield "
                   "(world height Y and normal N per cell) to displace a grid with")

@@ -11,8 +11,10 @@ namespace tp::app {
 bool isHeightfieldOutput(const std::string& path);
 
 // The water as a heightfield a DCC displaces a grid with: an EXR of n x n
-// float pixels, pixel (i, j) the cell centred at x = -extent/2 + (i + 1/2) h,
-// z = -extent/2 + (j + 1/2) h; channel Y its world height (water.level + u),
+// float pixels, pixel (i, j) (column i, row j from the top) the cell centred
+// at x = -extent/2 + (i + 1/2) h, z = -extent/2 + (j + 1/2) h: the pool seen
+// from above, as the exported meshes' UVs lay an image over it
+// (shading/shaded_meshes); channel Y its world height (water.level + u),
 // N.X N.Y N.Z its unit normal as the renderer shades it; with the frame
 // number, the scene's frame rate and the software.
 void writeHeightfield(const std::string& path, const scene::Scene& scene, const sim::WaterState& water, uint32_t frame);

@@ -4,6 +4,8 @@
 // CLI::Range says "Value abc not in range [1 - 16384]" and prints a float's
 // bounds as 2.000000.
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -37,6 +39,19 @@ CLI::Validator inRange(T lo, T hi) {
         return {};
       },
       bounds);
+}
+
+// A check that the option's text is a frame number (0 to 4294967295), a
+// negative one answered as such: "-1: a frame number is 0 or more".
+inline CLI::Validator frameNumber() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        if (!input.empty() && input[0] == '-' && wholeNumber<long long>(input)) {
+          return input + ": a frame number is 0 or more";
+        }
+        return inRange(0u, std::numeric_limits<uint32_t>::max())(input);
+      },
+      "0 or more");
 }
 
 }  // namespace tp::app

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -15,6 +14,7 @@
 #include "cli/number_checks.hpp"
 #include "cli/profile_table.hpp"
 #include "cli/render_sequence.hpp"
+#include "cli/sequence_run.hpp"
 #include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "reference/gbuffer_world.hpp"
@@ -79,7 +79,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   auto* frame = cmd->add_option("--frame", o.frame,
                                 "Frame number: the water after N frames of water.frame_time from the scene's start")
                     ->capture_default_str()
-                    ->check(inRange(0u, std::numeric_limits<uint32_t>::max()));
+                    ->check(frameNumber());
   auto* frames =
       cmd->add_option("--frames", o.frames,
                       "Render the frames A to B (A-B, both included), each to --out with its #### replaced by the "
@@ -97,17 +97,14 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--checkpoint-dir", o.checkpointDir,
                   "With --frames: where checkpoints are saved (water.NNNNNN.exr in `sim`'s format, and .json); a "
                   "range starts from the latest one at or before its first frame to render, so any range can run "
-                  "on its own machine")
+                  "on its own machine; made if it is not there")
       ->type_name("DIR")
       ->needs(frames);
-  cmd->add_flag("--resume", o.resume,
-                "With --frames: leave out the frames whose files are already there and whole (a run stopped or "
-                "split goes on where it ended)")
-      ->needs(frames);
+  addResumeOption(cmd, o.resume, frames);
   cmd->add_option("--out", o.outs,
                   "Output file, its format from its extension: .exr (linear RGBA and the AOVs) or .png (the "
                   "tonemapped 8-bit sRGB frame); give one of each for both; default render.exr; with --frames, a "
-                  "pattern with ####; each written via a temporary file")
+                  "pattern with ####; each written via a temporary file, its folder made if it is not there")
       ->type_name("PATH");
   cmd->add_option("--png", o.pngAlso,
                   "Also write a PNG here, beside the EXR (render.exr unless --out names one): the old spelling of "

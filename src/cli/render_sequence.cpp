@@ -1,6 +1,5 @@
 #include "cli/render_sequence.hpp"
 
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -17,6 +16,7 @@
 #include "cli/gpu_session.hpp"
 #include "cli/interrupt_guard.hpp"
 #include "cli/sequence_progress.hpp"
+#include "cli/sequence_run.hpp"
 #include "cli/usage_error.hpp"
 #include "io/image_io.hpp"
 #include "render/renderer.hpp"
@@ -24,23 +24,13 @@
 namespace tp::app {
 namespace {
 
-// Whether a frame's files are there and whole: each readable to its end at
-// the frame's size (the EXR with its RGBA), as a finished render leaves them.
+// Whether a frame's files are there and whole, as a finished render leaves them.
 bool alreadyWritten(const std::string& exr, const std::string& png, uint32_t width, uint32_t height) {
-  try {
-    for (const std::string& path : {exr, png}) {
-      if (path.empty()) continue;
-      if (!std::filesystem::is_regular_file(path)) return false;
-      const io::FloatImage image = io::readImage(path);
-      if (image.width != width || image.height != height || image.channels.size() < 4) return false;
-    }
-    return true;
-  } catch (const std::exception&) {
-    return false;  // truncated or not an image: written again
+  for (const std::string& path : {exr, png}) {
+    if (!path.empty() && !imageIsWhole(path, width, height)) return false;
   }
+  return true;
 }
-
-const char* signalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
 
 }  // namespace
 
@@ -56,7 +46,8 @@ int runRenderSequence(const RenderOptions& o) {
   }
   if (o.checkpointEvery > 0 && o.checkpointDir.empty()) throw UsageError("--checkpoint-every needs --checkpoint-dir");
   if (!o.checkpointDir.empty()) {
-    if (!std::filesystem::is_directory(o.checkpointDir)) {
+    // A folder not there yet is made with the first checkpoint.
+    if (std::filesystem::exists(o.checkpointDir) && !std::filesystem::is_directory(o.checkpointDir)) {
       throw UsageError("--checkpoint-dir " + o.checkpointDir + ": not a folder");
     }
     base::checkWritable((std::filesystem::path(o.checkpointDir) / "water.000000.json").string());
@@ -67,21 +58,11 @@ int runRenderSequence(const RenderOptions& o) {
     throw UsageError("--checkpoint-dir: the scene has no water to checkpoint");
   }
 
-  std::vector<uint32_t> todo;
-  for (uint32_t f = range.first;; ++f) {
-    if (!(o.resume && alreadyWritten(framePath(o.exr, f), framePath(o.png, f), o.width, o.height))) {
-      todo.push_back(f);
-    }
-    if (f == range.last) break;
-  }
-  if (todo.empty()) {
-    std::printf("frames %u-%u: all %u already written\n", range.first, range.last, range.count());
-    return 0;
-  }
-  if (todo.size() < range.count()) {
-    std::printf("frames %u-%u: %zu already written, %zu to render\n", range.first, range.last,
-                range.count() - todo.size(), todo.size());
-  }
+  const std::vector<uint32_t> todo = framesToWrite(
+      range, o.resume,
+      [&](uint32_t f) { return alreadyWritten(framePath(o.exr, f), framePath(o.png, f), o.width, o.height); },
+      "render");
+  if (todo.empty()) return 0;
 
   GpuSession session(o.validate, o.device);
   render::Renderer renderer(session.context(), scene, o.width, o.height, plan.renderer);
@@ -118,13 +99,9 @@ int runRenderSequence(const RenderOptions& o) {
     writer.finish();
   }
   progress.finish();
-  if (const int signal = InterruptGuard::received()) {
-    std::fprintf(stderr,
-                 "render: stopped by %s after %u of %zu frames, each written whole; run again with --resume "
-                 "to render the rest\n",
-                 signalName(signal), written, todo.size());
+  if (InterruptGuard::received()) {
     session.finish();
-    return InterruptGuard::exitCode();
+    return reportStop("render", written, todo.size(), "render");
   }
   std::printf("wrote frames %u-%u (%u rendered) at %ux%u on %s\n", range.first, range.last, written, o.width, o.height,
               session.context().deviceName().c_str());

@@ -76,6 +76,12 @@ int runSim(const CLI::App& command, const SimOptions& o) {
                           .scheme = sim::parseScheme(o.scheme),
                           .gridDamping = o.gridDamping};
   const bool fromFile = o.init.rfind("drop:", 0) != 0 && o.init.rfind("mode:", 0) != 0;
+  // A file named on the command line that is not there is a bad command line,
+  // as --scene's is; one there but not a state fails later, with exit code 1.
+  if (fromFile) {
+    std::string path = o.init;
+    if (const std::string why = CLI::ExistingFile(path); !why.empty()) throw UsageError("--init: " + why);
+  }
   if (fromFile && command.count("--grid") == 0) params.n = 0;  // take the file's size
   if (params.n != 0) asUsageError([&] { sim::validate(params); });
 
@@ -98,7 +104,8 @@ int runSim(const CLI::App& command, const SimOptions& o) {
     sim::checkStable(params, givenStep ? o.dt : o.frameTime / substeps);
   });
   const double dt = givenStep ? o.dt : o.frameTime / substeps;
-  if (!fromFile) initial = io::initialState(o.init, params, dt);
+  // drop:... and mode:... are values of the command line: a malformed one exits 2.
+  if (!fromFile) asUsageError([&] { initial = io::initialState(o.init, params, dt); });
   const uint64_t totalSteps = o.steps * substeps;
 
   double maxHeight = 0.0;

@@ -111,9 +111,13 @@ class ObjectReader {
     }
   }
 
+  // Refuses a key no read asked for, naming the nearest one asked for, as
+  // --set does (the keys asked for are this object's).
   void finish() const {
     for (const auto& [key, value] : object_.items()) {
-      if (!seen_.count(key)) fail(name(key.c_str()), "is not a known key");
+      if (seen_.count(key)) continue;
+      const auto guess = base::closestWord(key, std::vector<std::string>(seen_.begin(), seen_.end()));
+      fail(name(key.c_str()), "is not a known key" + (guess ? "; did you mean " + name(guess->c_str()) + "?" : ""));
     }
   }
 

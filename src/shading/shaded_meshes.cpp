@@ -13,11 +13,15 @@
 namespace tp::render {
 namespace {
 
-// Each vertex's (u, v) from where it lies on the square [-half, half]^2 of the x, z plane.
+// Each vertex's (u, v) from where it lies on the square [-half, half]^2 of the
+// x, z plane, seen from above: u along +x, v (up the image) along -z. An
+// image's row 0 is its top, so row j lies at z = -half + (j + 1/2) 2 half / rows:
+// the heightfield EXR (heightfield_output), looked up at the water's (u, v),
+// gives each vertex its own height, in any DCC.
 std::vector<glm::vec2> planarUvs(const std::vector<glm::vec3>& positions, float half) {
   std::vector<glm::vec2> uvs;
   uvs.reserve(positions.size());
-  for (const glm::vec3& p : positions) uvs.push_back((glm::vec2(p.x, p.z) + half) / (2.0f * half));
+  for (const glm::vec3& p : positions) uvs.push_back(glm::vec2(p.x + half, half - p.z) / (2.0f * half));
   return uvs;
 }
 
@@ -119,7 +123,7 @@ scene::ShadedMesh exportedWaterMesh(const scene::Scene& scene, const sim::WaterS
   m.mesh = std::move(toTheWalls.mesh);
   m.mesh.name = "water";
   m.normals = std::move(toTheWalls.normals);
-  for (const glm::vec3& at : m.mesh.positions) m.uvs.push_back((glm::vec2(at.x, at.z) + half) / (2.0f * half));
+  m.uvs = planarUvs(m.mesh.positions, half);
   // What a metre of water lets through: the colour it takes on in depth.
   m.material.albedo = glm::exp(-scene.water.absorption);
   m.material.specular = 1.0f;

@@ -70,12 +70,15 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
 
 WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame) {
   WaterState result;
-  simulateWaterFrames(ctx, scene, frame, frame, [&](uint32_t, const WaterState& water) { result = water; });
+  simulateWaterFrames(ctx, scene, frame, frame, [&](uint32_t, const WaterState& water) {
+    result = water;
+    return true;
+  });
   return result;
 }
 
 void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uint32_t first, uint32_t last,
-                         const std::function<void(uint32_t frame, const WaterState& water)>& atFrame) {
+                         const std::function<bool(uint32_t frame, const WaterState& water)>& atFrame) {
   GpuStepper stepper(ctx, waterParams(scene), waterInitialState(scene.water), StepKernel::ActiveTiles);
   const WaterClock clock{.substeps = waterSubsteps(scene.water)};  // from the start
   uint64_t done = 0;
@@ -87,8 +90,7 @@ void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uin
         ctx, [&](const vk::raii::CommandBuffer& cmd) { recordWaterRun(cmd, stepper, scene, clock, done, steps, due); },
         "water simulation");
     done = steps;
-    atFrame(frame, stepper.download());
-    if (frame == last) break;
+    if (!atFrame(frame, stepper.download()) || frame == last) break;
   }
 }
 

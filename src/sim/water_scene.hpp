@@ -25,9 +25,10 @@ void recordWaterSteps(const vk::raii::CommandBuffer& cmd, GpuStepper& water, con
 WaterState simulateWater(const gpu::Context& ctx, const scene::Scene& scene, uint32_t frame);
 // The same for each frame from `first` to `last` in turn, in one run from the
 // start: each frame's state is handed to `atFrame` as it is reached, so a
-// sequence costs the steps to its last frame once.
+// sequence costs the steps to its last frame once. `atFrame` returns whether
+// to go on: false ends the run there (a sequence stopped by a signal).
 void simulateWaterFrames(const gpu::Context& ctx, const scene::Scene& scene, uint32_t first, uint32_t last,
-                         const std::function<void(uint32_t frame, const WaterState& water)>& atFrame);
+                         const std::function<bool(uint32_t frame, const WaterState& water)>& atFrame);
 
 // From the scene's water to the simulation and the surface pass: the one place
 // where the square centred on the origin meets the grid's cell coordinates.
