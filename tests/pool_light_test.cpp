@@ -43,8 +43,11 @@ scene::Scene widePool(float rho, float absorption) {
 // Under a sky of radiance `sky` and `sun`.
 float middleOfTheFloor(const scene::Scene& s, float sky = 1.0f, render::PoolLightSun sun = {}) {
   const render::PoolModel model = render::poolModel(s);
-  const std::vector<glm::vec4> light = render::poolLightTexels(
-      model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun);
+  const std::vector<glm::vec4> all =
+      render::bakePoolLight(
+          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun)
+          .floorAndLight;
+  const glm::vec4* light = all.data() + model.floorVertices.size();
   constexpr int kFrom = TP_POOL_LIGHT_FLOOR / 4, kTo = 3 * TP_POOL_LIGHT_FLOOR / 4;
   double sum = 0.0;
   for (int j = kFrom; j < kTo; ++j)

@@ -456,7 +456,7 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
     skyImage = loadSkyImage(scene.sky);
     light = skyImageLight(*skyImage);
   }
-  const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
+  const shader::FrameUniforms uniforms = frameUniforms(scene, withGroundLight(scene, light), width, height);
   const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
   // Camera rays start in the water when the camera is under the surface.
   const bool cameraInWater = cameraMedium(scene, water).extinction.w > 0.0f;

@@ -5,6 +5,7 @@
 #include "gpu/submit.hpp"
 #include "render/pass_kinds.hpp"
 #include "render/sky_image.hpp"
+#include "shading/frame_uniforms.hpp"
 
 namespace tp::render {
 
@@ -22,7 +23,7 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
     const SkyImage image = loadSkyImage(scene.sky);
     image_ = uploadSkyImage(ctx, image, "sky image texture", skyMipLevels({image.width, image.height}));
     fillMips(ctx);
-    light_ = skyImageLight(image);
+    light_ = withGroundLight(scene, skyImageLight(image));
     ref_ = graph.image("sky", image_, vk::ImageLayout::eShaderReadOnlyOptimal);
     cpuImage_ = image;
     return;
@@ -31,7 +32,7 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
   image_ =
       gpu::createImage2D(ctx, extent, kSkyFormat, vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled,
                          "sky texture", skyMipLevels(extent));
-  light_ = proceduralSkyLight(scene.sky);
+  light_ = withGroundLight(scene, proceduralSkyLight(scene.sky));
   ref_ = graph.image("sky", image_);
   params_ = skyParams(scene.sky);
   skyPipeline_ = gpu::createComputePipeline(ctx, "sky.comp", sizeof(shader::SkyParams));

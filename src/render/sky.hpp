@@ -20,7 +20,8 @@ class Sky {
   // `gbuffer`: the surfaces' targets have the G-buffer.
   Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer);
   GraphImage image() const { return ref_; }
-  // What lights the scene: the sun and the sky's SH9.
+  // What lights the scene: the sun, and the sky's SH9 with the ground's
+  // light below the horizon (withGroundLight).
   const SkyLight& light() const { return light_; }
   // Its radiance along unit d without the sun's disc, on the CPU, as the
   // texture holds it (what bakes the pool's light: shading/pool_light.hpp).

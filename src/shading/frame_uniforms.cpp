@@ -85,8 +85,14 @@ shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light) {
   return sh;
 }
 
+SkyLight withGroundLight(const scene::Scene& scene, SkyLight light) {
+  const shader::Sh9 ground = groundLightSh9(scene, light);
+  for (uint32_t k = 0; k < 9; ++k) light.skySh.c[k] += ground.c[k];
+  return light;
+}
+
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, uint32_t width, uint32_t height) {
-  return frameUniforms(scene, proceduralSkyLight(scene.sky), width, height);
+  return frameUniforms(scene, withGroundLight(scene, proceduralSkyLight(scene.sky)), width, height);
 }
 
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& light, uint32_t width, uint32_t height,
@@ -106,8 +112,7 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.sunIrradiance = glm::vec4(light.sunIrradiance, 0.0f);
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
   u.inverseProjection = glm::inverse(u.projection);
-  const shader::Sh9 ground = groundLightSh9(scene, light);
-  for (uint32_t k = 0; k < 9; ++k) u.skySh.c[k] = light.skySh.c[k] + ground.c[k];
+  u.skySh = light.skySh;
   // y: the uniform index base, 0 (shared/sun_shadow.h).
   u.sampling = glm::vec4(filterWidth, 0.0f, 0.0f, 0.0f);
   return u;

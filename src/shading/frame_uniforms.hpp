@@ -27,12 +27,15 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
 // nothing to a surface facing up (SH9's bands 0-2 of a lower hemisphere
 // cancel there).
 shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light);
+// The sky's light with the ground's below the horizon added to its SH9:
+// the light a scene's frames take, made once where the sky is.
+SkyLight withGroundLight(const scene::Scene& scene, SkyLight light);
 
 // Fills the per-frame uniforms but for the shadows (none: the caller's to
 // set, from shadowCasters): camera matrices for a width x height image and
-// the light (the procedural sky's, when none is given): the sun, and the
-// sky above the horizon with the ground's light below it (groundLightSh9). `pixelOffset` moves
-// where each pixel samples the image, in pixels from its centre (x right, y
+// the light (the procedural sky's with the ground's, withGroundLight, when
+// none is given; as it is when given). `pixelOffset` moves where each pixel
+// samples the image, in pixels from its centre (x right, y
 // down): the jitter of an anti-aliased frame's samples; `filterWidth` the
 // width in pixels textures are filtered over (FrameUniforms::sampling).
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& light, uint32_t width, uint32_t height,

@@ -115,11 +115,26 @@ class PoolLightBake {
   bool sunReaches(glm::vec3 p) const {
     const glm::vec3 toSun = sun_.direction;
     if (toSun.y <= 0.0f) return false;
-    const glm::vec3 up = -glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+    return seesOut(p, refractedUp(toSun), toSun) >= 0.0f;
+  }
+
+  // The line in the water that leaves the flat surface along `air`.
+  glm::vec3 refractedUp(glm::vec3 air) const { return -glm::refract(-air, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_); }
+
+  // How far p is from the surface along `up` (in the water, rising) when
+  // that line meets no wall and its way on along `air` clears the rim;
+  // -1 when the pool hides the sky that way.
+  float seesOut(glm::vec3 p, glm::vec3 up, glm::vec3 air) const {
     const float toSurface = (level_ - p.y) / up.y;
     const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
-    if (std::min(walls.x, walls.y) < toSurface) return false;
-    return clearsTheRim(p + toSurface * up, toSun);
+    if (std::min(walls.x, walls.y) < toSurface || !clearsTheRim(p + toSurface * up, air)) return -1.0f;
+    return toSurface;
+  }
+
+  // The sun's irradiance at p with normal n through the flat surface, where
+  // it reaches (sunReaches).
+  glm::vec3 sunThroughFlatWater(glm::vec3 p, glm::vec3 n) const {
+    return shader::sunThroughFlatWater(pool_, frame_, p, n);
   }
 
  private:
@@ -143,12 +158,11 @@ class PoolLightBake {
   glm::vec3 window(glm::vec3 p, glm::vec3 n) const {
     glm::vec3 sum(0.0f);
     for (const SkyBin& bin : skyBins_) {
-      const glm::vec3 up = -glm::refract(-bin.direction, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+      const glm::vec3 up = refractedUp(bin.direction);
       const float facing = glm::dot(n, up);
       if (facing <= 0.0f) continue;
-      const float toSurface = (level_ - p.y) / up.y;
-      const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
-      if (std::min(walls.x, walls.y) < toSurface || !clearsTheRim(p + toSurface * up, bin.direction)) continue;
+      const float toSurface = seesOut(p, up, bin.direction);
+      if (toSurface < 0.0f) continue;
       const float transmitted = 1.0f - shader::fresnelDielectric(bin.direction.y, 1.0f, ior_);
       sum += bin.light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-extinction_ * toSurface);
     }
@@ -203,8 +217,7 @@ class PoolLightBake {
         throughput *= glm::exp(-extinction_ * hit.distance);
         const glm::vec3 p = hit.position + kOffset * hit.normal;
         throughput *= albedo(hit, p);
-        if (sunReaches(p))
-          radiance += throughput / glm::pi<float>() * shader::sunThroughFlatWater(pool_, frame_, p, hit.normal);
+        if (sunReaches(p)) radiance += throughput / glm::pi<float>() * sunThroughFlatWater(p, hit.normal);
         d = cosineAbout(hit.normal, glm::vec2(uniform(), uniform()));
         o = p;
         ++bounce;
@@ -227,15 +240,13 @@ class PoolLightBake {
 // Directions over the sphere for the light around: a Fibonacci lattice.
 constexpr uint32_t kAroundDirections = 4096;
 
-shader::Sh9 lightAround(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorAndLight,
-                        const SkyRadiance& sky, const PoolLightSun& sun) {
+// The light around (PoolLight::around), from the bake whose texels
+// `floorAndLight` holds after the floor's vertices.
+shader::Sh9 lightAround(const PoolLightBake& bake, const shader::PoolParams& pool,
+                        const std::vector<glm::vec4>& floorAndLight) {
   const glm::vec4* data = floorAndLight.data();
-  shader::FrameUniforms frame{};
-  frame.sunDirection = glm::vec4(sun.direction, 0.0f);
-  frame.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
   const float level = pool.water.x;
   const glm::vec3 centre(0.0f, level - 0.5f * (level - (pool.box.y - pool.box.z)), 0.0f);
-  const PoolLightBake bake(pool, floorAndLight, sky, sun);
   glm::dvec3 sum[9] = {};
   for (uint32_t i = 0; i < kAroundDirections; ++i) {
     const float y = 1.0f - 2.0f * (float(i) + 0.5f) / kAroundDirections;
@@ -253,7 +264,7 @@ shader::Sh9 lightAround(const shader::PoolParams& pool, const std::vector<glm::v
       throughput *= glm::exp(-glm::vec3(pool.extinction) * hit.distance);
       const glm::vec3 p = hit.position + kOffset * hit.normal;
       glm::vec3 irradiance = shader::poolLightAt(pool, p, hit.normal, data);
-      if (bake.sunReaches(p)) irradiance += shader::sunThroughFlatWater(pool, frame, p, hit.normal);
+      if (bake.sunReaches(p)) irradiance += bake.sunThroughFlatWater(p, hit.normal);
       radiance += throughput * bake.albedo(hit, p) / glm::pi<float>() * irradiance;
       break;
     }
@@ -267,28 +278,24 @@ shader::Sh9 lightAround(const shader::PoolParams& pool, const std::vector<glm::v
 
 }  // namespace
 
-std::vector<glm::vec4> poolLightTexels(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices,
-                                       const SkyRadiance& sky, const PoolLightSun& sun) {
-  const PoolLightBake bake(pool, floorVertices, sky, sun);
-  std::vector<glm::vec4> texels(TP_POOL_LIGHT_TEXELS);
+PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
+                        const PoolLightSun& sun) {
+  PoolLight light;
+  light.floorAndLight = std::move(floorVertices);
+  const size_t first = light.floorAndLight.size();
+  // The texels' room made first: the bake reads the floor from this buffer.
+  light.floorAndLight.resize(first + TP_POOL_LIGHT_TEXELS);
+  glm::vec4* texels = light.floorAndLight.data() + first;
+  const PoolLightBake bake(pool, light.floorAndLight, sky, sun);
   std::atomic<uint32_t> next{0};
   auto work = [&] {
-    for (uint32_t k = next++; k < texels.size(); k = next++) texels[k] = glm::vec4(bake.texel(k), 0.0f);
+    for (uint32_t k = next++; k < TP_POOL_LIGHT_TEXELS; k = next++) texels[k] = glm::vec4(bake.texel(k), 0.0f);
   };
   std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
   for (std::thread& t : threads) t = std::thread(work);
   work();
   for (std::thread& t : threads) t.join();
-  return texels;
-}
-
-PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
-                        const PoolLightSun& sun) {
-  const std::vector<glm::vec4> texels = poolLightTexels(pool, floorVertices, sky, sun);
-  PoolLight light;
-  light.floorAndLight = std::move(floorVertices);
-  light.floorAndLight.insert(light.floorAndLight.end(), texels.begin(), texels.end());
-  light.around = lightAround(pool, light.floorAndLight, sky, sun);
+  light.around = lightAround(bake, pool, light.floorAndLight);
   return light;
 }
 

@@ -17,21 +17,17 @@ struct PoolLightSun {
   glm::vec3 irradiance{0.0f};
 };
 
-// The pool's static light under the water (shared/pool_light.h): for each
-// of its TP_POOL_LIGHT_TEXELS texels, the irradiance from everything but the
-// sun straight through the surface, by paths through the pool as it stands
-// (flat water at its rest level, the walls, the floor's mesh, no objects):
-// the first direction from a fixed cosine-weighted set, the surface's
-// Fresnel split followed both ways, the sun drawn at every later bounce.
-// `floorVertices`: the pool's floor mesh (PoolModel). Deterministic: the
-// raster and the model tracer bake the same numbers.
-std::vector<glm::vec4> poolLightTexels(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices,
-                                       const SkyRadiance& sky, const PoolLightSun& sun);
-
 // What the pool's bake gives the shaders.
 struct PoolLight {
   // The floor's vertices followed by the baked light: the buffer the
-  // shaders read both from (shared/pool_light.h).
+  // shaders read both from (shared/pool_light.h). The light: for each of
+  // TP_POOL_LIGHT_TEXELS texels, the irradiance from everything but the
+  // sun straight through the surface, by paths through the pool as it
+  // stands (flat water at its rest level, the walls, the floor's mesh, no
+  // objects): the first direction from a fixed cosine-weighted set, the
+  // surface's Fresnel split followed both ways, the sun drawn at every
+  // later bounce. Deterministic: the raster and the model tracer bake the
+  // same numbers.
   std::vector<glm::vec4> floorAndLight;
   // The light around an object under the water (PoolParams::around): the
   // radiance reaching the pool's centre, half way down, from every
@@ -42,7 +38,8 @@ struct PoolLight {
   shader::Sh9 around{};
 };
 
-// The texels and the light around, for the pool's parameters and floor.
+// The texels and the light around, for the pool's parameters and floor
+// mesh (PoolModel's floorVertices).
 PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
                         const PoolLightSun& sun);
 
