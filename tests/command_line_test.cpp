@@ -75,6 +75,8 @@ TEST(CommandLine, BadValuesExitTwoInTheUsersWords) {
       {"render --size 16384x16384", "over the limit"},
       {"render --frames 5-2", "--frames 5-2: expected A-B"},
       {"render --frames 0-1 --out x.exr", "--frames 0-1: the output x.exr needs ####"},
+      {"render --frames 0-1 --out 'x.$F4.####.exr'", "the output x.$F4.####.exr has two places for the frame"},
+      {"export --frames 0-1 --out 'x.%04d.%d.obj'", "the output x.%04d.%d.obj has two places for the frame"},
       {"render --checkpoint-every 2 --frames 0-1 --out x.####.exr", "--checkpoint-every needs --checkpoint-dir"},
       {"bench tiles --radii 3", "--radii: 3 is outside 0 to 2"},
       {"bench wake --speeds 0.01", "--speeds: 0.01 is outside 0.05 to 2"},
@@ -122,13 +124,15 @@ TEST(CommandLine, OutputsTakeTheirFormatFromTheExtension) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("render.exr")));
   EXPECT_TRUE(std::filesystem::exists(dir.file("old.png")));
 
-  // A sequence of PNGs alone.
+  // A sequence of PNGs alone, its pattern in printf's way, and the EXRs beside them in Houdini's.
   ScratchDir frames;
-  r = runTidepool("render --size 48x32 --frames 0-1 --out " + frames.file("f.####.png") + " --validate", frames);
+  r = runTidepool("render --size 48x32 --frames 0-1 --out " + frames.file("f.%04d.png") + " --out '" +
+                      frames.file("f.$F2.exr") + "' --validate",
+                  frames);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::vector<std::string> written = frames.entries();
   std::sort(written.begin(), written.end());
-  EXPECT_EQ(written, (std::vector<std::string>{"f.0000.png", "f.0001.png"}));
+  EXPECT_EQ(written, (std::vector<std::string>{"f.00.exr", "f.0000.png", "f.0001.png", "f.01.exr"}));
 }
 
 // --set changes the scene exactly as the scene file's key does.
