@@ -156,6 +156,8 @@ TEST(CommandLine, SetRendersAsTheSceneFileWithTheKeyChanged) {
       {"render --set water.grdi=3", "--set water.grdi=3: water.grdi: not a key of the scene; did you mean water.grid?"},
       {"render --set wter.grid=3", "did you mean water.grid?"},
       {"render --set spheres.0.radus=1", "did you mean spheres.0.radius?"},
+      {"render --set spheres.1.radius=1",
+       "spheres has 1 element (0); to add one, set it whole: --set 'spheres.1={...}'"},
       {"render --set camera.fov=0", "--set camera.fov=0: camera fov 0 degrees is outside (0, 180)"},
       {"render --set water.level=0.3", "water.level 0.3 must be below the pool's rim, the ground at 0"},
       {"render --set novalue", "--set novalue: expected KEY=VALUE"},
