@@ -75,6 +75,8 @@ TEST(CommandLine, BadValuesExitTwoInTheUsersWords) {
       {"render --size 16384x16384", "over the limit"},
       {"render --frames 5-2", "--frames 5-2: expected A-B"},
       {"render --frames 0-1 --out x.exr", "--frames 0-1: the output x.exr needs ####"},
+      {"render --frames 0-1 --out 'x.$F4.####.exr'", "the output x.$F4.####.exr has two places for the frame"},
+      {"export --frames 0-1 --out 'x.%04d.%d.obj'", "the output x.%04d.%d.obj has two places for the frame"},
       {"render --checkpoint-every 2 --frames 0-1 --out x.####.exr", "--checkpoint-every needs --checkpoint-dir"},
       {"bench tiles --radii 3", "--radii: 3 is outside 0 to 2"},
       {"bench wake --speeds 0.01", "--speeds: 0.01 is outside 0.05 to 2"},
@@ -122,13 +124,15 @@ TEST(CommandLine, OutputsTakeTheirFormatFromTheExtension) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("render.exr")));
   EXPECT_TRUE(std::filesystem::exists(dir.file("old.png")));
 
-  // A sequence of PNGs alone.
+  // A sequence of PNGs alone, its pattern in printf's way, and the EXRs beside them in Houdini's.
   ScratchDir frames;
-  r = runTidepool("render --size 48x32 --frames 0-1 --out " + frames.file("f.####.png") + " --validate", frames);
+  r = runTidepool("render --size 48x32 --frames 0-1 --out " + frames.file("f.%04d.png") + " --out '" +
+                      frames.file("f.$F2.exr") + "' --validate",
+                  frames);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::vector<std::string> written = frames.entries();
   std::sort(written.begin(), written.end());
-  EXPECT_EQ(written, (std::vector<std::string>{"f.0000.png", "f.0001.png"}));
+  EXPECT_EQ(written, (std::vector<std::string>{"f.00.exr", "f.0000.png", "f.0001.png", "f.01.exr"}));
 }
 
 // --set changes the scene exactly as the scene file's key does.
@@ -152,6 +156,8 @@ TEST(CommandLine, SetRendersAsTheSceneFileWithTheKeyChanged) {
       {"render --set water.grdi=3", "--set water.grdi=3: water.grdi: not a key of the scene; did you mean water.grid?"},
       {"render --set wter.grid=3", "did you mean water.grid?"},
       {"render --set spheres.0.radus=1", "did you mean spheres.0.radius?"},
+      {"render --set spheres.1.radius=1",
+       "spheres has 1 element (0); to add one, set it whole: --set 'spheres.1={...}'"},
       {"render --set camera.fov=0", "--set camera.fov=0: camera fov 0 degrees is outside (0, 180)"},
       {"render --set water.level=0.3", "water.level 0.3 must be below the pool's rim, the ground at 0"},
       {"render --set novalue", "--set novalue: expected KEY=VALUE"},

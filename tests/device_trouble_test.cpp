@@ -33,6 +33,31 @@ TEST(DeviceTrouble, OutOfDeviceMemoryEndsTheRunWithOneLine) {
       << line;
 }
 
+// With no Vulkan driver the loader can load (VK_ICD_FILENAMES naming a file
+// that is not there), the one line says where the loader looked and how to
+// point it at a driver; a --device that matches none lists the devices found.
+TEST(DeviceTrouble, NoDriverOrNoMatchingDeviceSaysWhatWasFound) {
+  ScratchDir dir;
+  const std::string missing = dir.file("nosuch_icd.json");
+  for (const std::string& args :
+       {"render --size 16x16 --out " + dir.file("x.exr"), "sim --grid 16 --steps 1 --out " + dir.file("s.exr"),
+        "export --out " + dir.file("m.obj")}) {
+    const ProcessResult r = cleanFailure(args, dir, {}, "env -u VK_DRIVER_FILES VK_ICD_FILENAMES=" + missing);
+    EXPECT_EQ(r.exitCode, 1) << args;
+    for (const std::string& says : {"no Vulkan driver: the loader found none it could load in VK_ICD_FILENAMES=" +
+                                        missing + "; set it to an installed driver's .json (",
+                                    std::string("lvp_icd."),
+                                    std::string("or unset it, and choose among its "
+                                                "devices with --device NAME")}) {
+      EXPECT_NE(r.err.find(says), std::string::npos) << args << "\n" << r.err;
+    }
+  }
+  const ProcessResult r = cleanFailure("render --size 16x16 --device no-such-gpu --out " + dir.file("x.exr"), dir, {});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("no usable Vulkan 1.3 device matches 'no-such-gpu' (devices: llvmpipe"), std::string::npos)
+      << r.err;
+}
+
 // Every Vulkan object is destroyed before the device and instance: the
 // validation layer, which reports what is left when the device goes, prints
 // nothing after its count, for each command that makes GPU objects. The

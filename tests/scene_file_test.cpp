@@ -288,3 +288,40 @@ TEST(SceneFile, SavingWritesAWholeFileOrNone) {
 }
 
 }  // namespace tp::test
+
+namespace tp::test {
+
+// A setting one past a list's end adds an element, its absent keys at their
+// defaults; further out, or a key of an element not there, is refused with
+// the way to add one.
+TEST(SceneFile, SettingOnePastAListsEndAddsAnElement) {
+  const scene::Scene one = scene::defaultScene();
+  ASSERT_EQ(one.spheres.size(), 1u);
+  const scene::Scene two = scene::withSetting(one, "spheres.1", R"({"center": [0.5, 0.2, 0], "radius": 0.2})");
+  ASSERT_EQ(two.spheres.size(), 2u);
+  EXPECT_EQ(two.spheres[0], one.spheres[0]);
+  EXPECT_EQ(two.spheres[1].center, glm::vec3(0.5f, 0.2f, 0.0f));
+  EXPECT_EQ(two.spheres[1].radius, 0.2f);
+  EXPECT_EQ(two.spheres[1].material, scene::Sphere{}.material);
+  EXPECT_EQ(scene::withSetting(one, "boxes.0", "{}").boxes, std::vector<scene::Box>{scene::Box{}});
+
+  const std::string add = "; to add one, set it whole: --set ";
+  const std::tuple<const scene::Scene*, std::string, std::string> cases[] = {
+      {&one, "spheres.2", "spheres has 1 element (0)" + add + "'spheres.1={...}'"},
+      {&one, "spheres.1.radius", "spheres has 1 element (0)" + add + "'spheres.1={...}'"},
+      {&two, "spheres.5.radius", "spheres has 2 elements (0 to 1)" + add + "'spheres.2={...}'"},
+      {&one, "boxes.0.yaw", "boxes has no elements" + add + "'boxes.0={...}'"},
+      // A vector of numbers is not a list to add to.
+      {&one, "camera.position.3", "(keys are a scene file's, joined by dots: water.wave_speed, spheres.0.radius)"},
+  };
+  for (const auto& [s, key, says] : cases) {
+    try {
+      (void)scene::withSetting(*s, key, "{}");
+      ADD_FAILURE() << key << " was taken";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), key + ": not a key of the scene" + (says[0] == '(' ? " " : "; ") + says);
+    }
+  }
+}
+
+}  // namespace tp::test

@@ -9,6 +9,8 @@
 #include <optional>
 
 #include "cli/checkpoint_files.hpp"
+#include "cli/frame_sequence.hpp"
+#include "cli/usage_error.hpp"
 #include "gpu_test.hpp"
 #include "io/image_io.hpp"
 #include "process.hpp"
@@ -234,6 +236,46 @@ TEST(RenderSequence, FarmScriptsRenderTheFramesOfOneGo) {
     SCOPED_TRACE("frame " + std::to_string(f));
     expectSameImage(frameFile(dir, "one", f), frameFile(dir, "parallel", f));
     expectSameImage(frameFile(dir, "one", f), frameFile(dir, "slurm", f));
+  }
+}
+
+// Each DCC's way of writing the frame number's place names the same files.
+TEST(RenderSequence, FramePatternsOfEveryConventionNameTheFrame) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"f.####.exr", "f.0007.exr"},   {"f.%04d.exr", "f.0007.exr"}, {"f.$F4.exr", "f.0007.exr"},
+      {"f.##.exr", "f.07.exr"},       {"f.%02d.exr", "f.07.exr"},   {"f.$F2.exr", "f.07.exr"},
+      {"f.#.exr", "f.7.exr"},         {"f.%d.exr", "f.7.exr"},      {"f.$F.exr", "f.7.exr"},
+      {"f_$F3.exr", "f_007.exr"},     {"%03d/f.exr", "007/f.exr"},  {"f.$FPS.%d.exr", "f.$FPS.7.exr"},
+      {"100%.##.png", "100%.07.png"},
+  };
+  for (const auto& [pattern, path] : cases) {
+    EXPECT_NO_THROW(app::checkFramePattern(pattern, "7")) << pattern;
+    EXPECT_EQ(app::framePath(pattern, 7), path) << pattern;
+  }
+  EXPECT_EQ(app::framePath("f.%02d.exr", 1234), "f.1234.exr");
+}
+
+// A path with no place for the frame number, or two (of one convention or
+// of two), is a bad command line.
+TEST(RenderSequence, FramePatternsRefuseNoneOrTwoPlaces) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"f.exr", "needs #### where the frame number goes (or %04d or $F4"},
+      {"f.%4d.exr", "needs ####"},
+      {"f.$FF.exr", "needs ####"},
+      {"f.####.%04d.exr", "has two places for the frame number, #### and %04d: keep one"},
+      {"f.$F4.####.exr", "$F4 and ####"},
+      {"take#2/f.####.exr", "# and ####"},
+      {"f.%d.%02d.exr", "%d and %02d"},
+  };
+  for (const auto& [pattern, says] : cases) {
+    try {
+      app::checkFramePattern(pattern, "0-3");
+      ADD_FAILURE() << pattern << " was taken";
+    } catch (const app::UsageError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("--frames 0-3: the output " + pattern), std::string::npos) << what;
+      EXPECT_NE(what.find(says), std::string::npos) << what;
+    }
   }
 }
 

@@ -6,6 +6,8 @@
 // change happen.
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
+
 #include <filesystem>
 
 #include "gpu_test.hpp"
@@ -27,7 +29,7 @@ class ViewSessionTest : public GpuTest {
   }
   // Renders the session's next frame as the viewer does.
   render::RenderedFrame next(app::ViewSession& s) {
-    render::RenderedFrame frame = s.renderer().render({.frame = s.frame()});
+    render::RenderedFrame frame = s.renderer().render({.frame = s.frame(), .hdr = s.wantsHdr()});
     s.rendered(frame);
     return frame;
   }
@@ -124,6 +126,28 @@ TEST_F(ViewSessionTest, SaveSceneWritesTheSceneAsItStands) {
   EXPECT_EQ(scene::loadSceneFile(path), s.renderer().scene());
   EXPECT_FALSE(s.apply(app::command::SaveScene{"/dev/null/x.json"}));
   EXPECT_TRUE(s.messageIsError());
+}
+
+// The save key's EXR holds render's attributes: the frame number and rate
+// beside the camera, as `render --frame N` writes them.
+TEST_F(ViewSessionTest, SavedFrameHoldsRendersAttributes) {
+  ScratchDir dir;
+  app::ViewSession s(std::make_unique<render::Renderer>(ctx(), scene::defaultScene(), kWidth, kHeight), kWidth, kHeight,
+                     dir.path().string(), TIDEPOOL_SHADERS_DIR);
+  for (int i = 0; i < 3; ++i) next(s);
+  ASSERT_TRUE(s.apply(app::command::Save{}));
+  next(s);
+  auto in = OIIO::ImageInput::open(dir.file("view-0003.exr"));
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.get_int_attribute("frame", -1), 3);
+  const OIIO::ParamValue* fps = spec.find_attribute("framesPerSecond", OIIO::TypeRational);
+  ASSERT_TRUE(fps);
+  const int* rate = static_cast<const int*>(fps->data());
+  EXPECT_EQ(rate[0], 30);  // 1 / water.frame_time
+  EXPECT_EQ(rate[1], 1);
+  EXPECT_TRUE(spec.find_attribute("worldToCamera", OIIO::TypeMatrix44));
+  EXPECT_NE(spec.get_string_attribute("software").find("tidepool"), std::string::npos);
 }
 
 }  // namespace

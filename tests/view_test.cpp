@@ -485,7 +485,7 @@ TEST(View, SavedSceneRendersTheFrameTheViewerShows) {
 }
 
 // An .exr screenshot is `render --float`'s EXR of the frame: linear RGBA
-// float channels, the same values.
+// float channels, the same values, the frame number.
 TEST(View, ExrScreenshotIsTheFloatExrRenderWrites) {
   ScratchDir dir;
   const std::string shot = dir.file("shot.exr"), exr = dir.file("render.exr");
@@ -497,6 +497,9 @@ TEST(View, ExrScreenshotIsTheFloatExrRenderWrites) {
   EXPECT_EQ(shown.width, 64u);
   EXPECT_EQ(shown.height, 40u);
   EXPECT_EQ(shown.pixels, rendered.pixels);
+  auto in = OIIO::ImageInput::open(shot);
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_int_attribute("frame", -1), 2);
 }
 
 TEST(View, FailsCleanlyWithoutADisplay) {

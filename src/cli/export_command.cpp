@@ -95,10 +95,11 @@ CLI::App* addExportCommand(CLI::App& app, ExportOptions& o) {
   CLI::Option* frame = cmd->add_option("--frame", o.frame, "Frame number: the water after that many frames")
                            ->capture_default_str()
                            ->check(frameNumber());
-  CLI::Option* frames = cmd->add_option("--frames", o.frames,
-                                        "A-B: a mesh sequence, frame N written to --out with its #### replaced by N")
-                            ->type_name("A-B")
-                            ->excludes(frame);
+  CLI::Option* frames =
+      cmd->add_option("--frames", o.frames,
+                      "A-B: a mesh sequence, frame N written to --out with its #### (or %04d or $F4) replaced by N")
+          ->type_name("A-B")
+          ->excludes(frame);
   addResumeOption(cmd, o.resume, frames);
   cmd->add_option("--out", o.out,
                   "Output .obj (with its .mtl beside it), .ply or .glb; or .exr: the water alone as a heightfield "
@@ -113,10 +114,7 @@ int runExport(const ExportOptions& o) {
   std::optional<FrameRange> range;
   if (!o.frames.empty()) {
     range = parseFrameRange(o.frames);
-    if (!hasFrameField(o.out)) {
-      throw UsageError("--out " + o.out +
-                       ": with --frames the path needs #### where the frame number goes, e.g. meshes/pool.####.obj");
-    }
+    checkFramePattern(o.out, o.frames);
   }
   const bool heightfield = isHeightfieldOutput(o.out);
   if (!io::isMeshOutput(o.out) && !heightfield) {

@@ -55,14 +55,8 @@ void writeFrameExr(const RenderOptions& o, const scene::Scene& scene, const rend
   io::FloatImage image = frameChannels(frame, channels, aoRaw, aoRef);
   std::vector<io::PixelType> types(image.channels.size(), io::PixelType::Float);
   if (!o.floatOutput) std::fill(types.begin(), types.begin() + 4, io::PixelType::Half);
-  const io::ExrAttributes attributes{.hasCamera = true,
-                                     .worldToCamera = frame.worldToCamera,
-                                     .worldToNDC = frame.worldToNDC,
-                                     .linearRec709 = true,
-                                     .software = versionText(),
-                                     .frame = frameNumber,
-                                     .framesPerSecond = sceneFrameRate(scene),
-                                     .compression = o.compression};
+  io::ExrAttributes attributes = frameExrAttributes(scene, frame, frameNumber);
+  attributes.compression = o.compression;
   io::writeExr(exr, image, types, attributes);
 }
 
@@ -88,6 +82,17 @@ RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene) {
 
 base::Rational sceneFrameRate(const scene::Scene& scene) {
   return base::nearestRational(1.0 / double(scene.water.frameTime), kFpsMaxDenominator);
+}
+
+io::ExrAttributes frameExrAttributes(const scene::Scene& scene, const render::RenderedFrame& frame,
+                                     uint32_t frameNumber) {
+  return {.hasCamera = true,
+          .worldToCamera = frame.worldToCamera,
+          .worldToNDC = frame.worldToNDC,
+          .linearRec709 = true,
+          .software = versionText(),
+          .frame = frameNumber,
+          .framesPerSecond = sceneFrameRate(scene)};
 }
 
 void writeFrame(const RenderOptions& o, const scene::Scene& scene, const render::RenderedFrame& frame,

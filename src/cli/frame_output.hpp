@@ -5,6 +5,7 @@
 
 #include "base/rational.hpp"
 #include "cli/render_command.hpp"
+#include "io/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -26,6 +27,12 @@ RasterPlan rasterPlan(const RenderOptions& o, const scene::Scene& scene);
 // A scene's frames per second, 1 / water.frame_time, as the rational video
 // rate an EXR's framesPerSecond holds (30/1, 30000/1001).
 base::Rational sceneFrameRate(const scene::Scene& scene);
+
+// The attributes of a rendered frame's EXR, `render`'s and the viewer's
+// alike: the camera, Rec.709 primaries, the software, the frame number and
+// the scene's frame rate; the compression left at its default.
+io::ExrAttributes frameExrAttributes(const scene::Scene& scene, const render::RenderedFrame& frame,
+                                     uint32_t frameNumber);
 
 // Writes a rendered frame as `render` writes it: an EXR at `exr` unless it
 // is empty (RGBA, half unless --float, then the AOVs asked for as float

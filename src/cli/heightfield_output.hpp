@@ -15,8 +15,8 @@ bool isHeightfieldOutput(const std::string& path);
 // at x = -extent/2 + (i + 1/2) h, z = -extent/2 + (j + 1/2) h: the pool seen
 // from above, as the exported meshes' UVs lay an image over it
 // (shading/shaded_meshes); channel Y its world height (water.level + u),
-// N.X N.Y N.Z its unit normal as the renderer shades it; with the frame
-// number, the scene's frame rate and the software.
+// N.R N.G N.B its unit normal's x, y, z as the renderer shades it; with the
+// frame number, the scene's frame rate and the software.
 void writeHeightfield(const std::string& path, const scene::Scene& scene, const sim::WaterState& water, uint32_t frame);
 
 }  // namespace tp::app

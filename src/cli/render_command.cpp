@@ -81,11 +81,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                     ->capture_default_str()
                     ->check(frameNumber());
   auto* frames =
-      cmd->add_option("--frames", o.frames,
-                      "Render the frames A to B (A-B, both included), each to --out with its #### replaced by the "
-                      "frame number (e.g. frames/shot.####.exr; --png likewise), with progress (a bar on a "
-                      "terminal, a line per frame otherwise); SIGINT or SIGTERM stop it after the frame being "
-                      "written (exit 130 or 143)")
+      cmd->add_option(
+             "--frames", o.frames,
+             "Render the frames A to B (A-B, both included), each to --out with its #### (or %04d or $F4) "
+             "replaced by the frame number (e.g. frames/shot.####.exr; --png likewise), with progress (a bar on a "
+             "terminal, a line per frame otherwise); SIGINT or SIGTERM stop it after the frame being "
+             "written (exit 130 or 143)")
           ->type_name("A-B")
           ->excludes(frame);
   cmd->add_option("--checkpoint-every", o.checkpointEvery,
@@ -101,10 +102,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
       ->type_name("DIR")
       ->needs(frames);
   addResumeOption(cmd, o.resume, frames);
-  cmd->add_option("--out", o.outs,
-                  "Output file, its format from its extension: .exr (linear RGBA and the AOVs) or .png (the "
-                  "tonemapped 8-bit sRGB frame); give one of each for both; default render.exr; with --frames, a "
-                  "pattern with ####; each written via a temporary file, its folder made if it is not there")
+  cmd->add_option(
+         "--out", o.outs,
+         "Output file, its format from its extension: .exr (linear RGBA and the AOVs) or .png (the "
+         "tonemapped 8-bit sRGB frame); give one of each for both; default render.exr; with --frames, a "
+         "pattern with #### (or %04d or $F4); each written via a temporary file, its folder made if it is not there")
       ->type_name("PATH");
   cmd->add_option("--png", o.pngAlso,
                   "Also write a PNG here, beside the EXR (render.exr unless --out names one): the old spelling of "

@@ -38,10 +38,7 @@ int runRenderSequence(const RenderOptions& o) {
   const FrameRange range = parseFrameRange(o.frames);
   for (const std::string& pattern : {o.exr, o.png}) {
     if (pattern.empty()) continue;
-    if (!hasFrameField(pattern)) {
-      throw UsageError("--frames " + o.frames + ": the output " + pattern +
-                       " needs #### where the frame number goes, e.g. frames/shot.####.exr");
-    }
+    checkFramePattern(pattern, o.frames);
     base::checkWritable(framePath(pattern, range.first));
   }
   if (o.checkpointEvery > 0 && o.checkpointDir.empty()) throw UsageError("--checkpoint-every needs --checkpoint-dir");

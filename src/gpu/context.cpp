@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
+
+#include "base/closest_word.hpp"
 
 namespace tp::gpu {
 namespace {
@@ -26,6 +29,43 @@ bool hasLayer(const vk::raii::Context& context, const char* name) {
     if (std::string(layer.layerName.data()) == name) return true;
   }
   return false;
+}
+
+// The folders the Linux loader searches for driver manifests when neither
+// VK_DRIVER_FILES nor VK_ICD_FILENAMES is set (it also reads $XDG_* ones).
+constexpr const char* kDriverFolders[] = {"/etc/vulkan/icd.d", "/usr/local/share/vulkan/icd.d",
+                                          "/usr/share/vulkan/icd.d"};
+
+// What the loader looked for when it found no driver, and how to point it at
+// one, in one line: the environment variable it read, or the folders it
+// searched; and the driver manifests those folders hold.
+std::string noDriverMessage() {
+  std::vector<std::string> manifests;
+  for (const char* folder : kDriverFolders) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+      if (entry.path().extension() == ".json") manifests.push_back(entry.path().string());
+    }
+  }
+  std::sort(manifests.begin(), manifests.end());
+  const std::string install =
+      "install one (Debian: apt-get install mesa-vulkan-drivers gives lavapipe, which needs "
+      "no GPU)";
+  const std::string device = ", and choose among its devices with --device NAME";
+  // VK_DRIVER_FILES is the newer name; the loader reads it first.
+  for (const char* variable : {"VK_DRIVER_FILES", "VK_ICD_FILENAMES"}) {
+    if (const char* value = std::getenv(variable); value && *value) {
+      const std::string to = manifests.empty() ? "; " + install + " and set it to its .json or unset it"
+                                               : "; set it to an installed driver's .json (" +
+                                                     base::listWords(manifests) + ") or unset it";
+      return std::string("no Vulkan driver: the loader found none it could load in ") + variable + "=" + value + to +
+             device;
+    }
+  }
+  const std::vector<std::string> folders(std::begin(kDriverFolders), std::end(kDriverFolders));
+  const std::string there = manifests.empty() ? "" : " (there: " + base::listWords(manifests) + ")";
+  return "no Vulkan driver: the loader found none it could load in " + base::listWords(folders) + there + "; " +
+         install + " or point VK_ICD_FILENAMES at a driver's .json" + device;
 }
 
 vk::raii::Instance createInstance(const vk::raii::Context& context, const ContextOptions& options, ValidationLog* log) {
@@ -67,7 +107,11 @@ vk::raii::Instance createInstance(const vk::raii::Context& context, const Contex
     chain.unlink<vk::ValidationFeaturesEXT>();
     chain.unlink<vk::DebugUtilsMessengerCreateInfoEXT>();
   }
-  return vk::raii::Instance(context, chain.get<vk::InstanceCreateInfo>());
+  try {
+    return vk::raii::Instance(context, chain.get<vk::InstanceCreateInfo>());
+  } catch (const vk::IncompatibleDriverError&) {
+    throw std::runtime_error(noDriverMessage());
+  }
 }
 
 int typeRank(vk::PhysicalDeviceType type) {

@@ -288,6 +288,9 @@ std::string sceneToJson(const Scene& scene) {
 
 namespace {
 
+// A list of objects (spheres, boxes, camera.path), as opposed to a vector of numbers.
+bool isList(const json& value) { return value.is_array() && (value.empty() || value.front().is_object()); }
+
 // Names what `key` may have meant: the nearest key beside it in the scene
 // (water.grdi: water.grid), else the keys of the object it is under.
 std::string unknownKeyMessage(const json& root, const std::string& key) {
@@ -309,6 +312,13 @@ std::string unknownKeyMessage(const json& root, const std::string& key) {
     last = key.substr(start);
   }
   std::string message = key + ": not a key of the scene";
+  if (isList(*parent)) {
+    const std::string list = parentName.substr(0, parentName.size() - 1), next = std::to_string(parent->size());
+    std::string elements = " has no elements";
+    if (parent->size() == 1) elements = " has 1 element (0)";
+    if (parent->size() > 1) elements = " has " + next + " elements (0 to " + std::to_string(parent->size() - 1) + ")";
+    return message + "; " + list + elements + "; to add one, set it whole: --set '" + list + "." + next + "={...}'";
+  }
   if (!parent->is_object())
     return message + " (keys are a scene file's, joined by dots: water.wave_speed, spheres.0.radius)";
   std::vector<std::string> names;
@@ -318,6 +328,14 @@ std::string unknownKeyMessage(const json& root, const std::string& key) {
     return message + "; did you mean " + parentName + *guess + last.substr(head.size()) + "?";
   }
   return message + (parentName.empty() ? "; its objects are " : "; " + parentName + " has ") + base::listWords(names);
+}
+
+// Whether `at` is one past the end of a list (spheres.1 where there is one
+// sphere): setting it adds an element, its absent keys at their defaults.
+bool appendsToList(const json& root, const json::json_pointer& at) {
+  const json::json_pointer list = at.parent_pointer();
+  if (!root.contains(list) || !isList(root[list])) return false;
+  return at.back() == std::to_string(root[list].size());
 }
 
 }  // namespace
@@ -342,8 +360,10 @@ Scene withSetting(const Scene& scene, const std::string& key, const std::string&
     } catch (const json::exception&) {
       throw std::runtime_error(key + ": not a key of the scene");
     }
-    if (key.empty() || !root.contains(at)) throw std::runtime_error(unknownKeyMessage(root, key));
-    root[at] = setting;
+    if (key.empty() || !(root.contains(at) || appendsToList(root, at))) {
+      throw std::runtime_error(unknownKeyMessage(root, key));
+    }
+    root[at] = setting;  // one past an array's end, the array grows by it
   }
   return parseScene(root.dump(), "setting " + key);
 }

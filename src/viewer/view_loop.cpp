@@ -47,6 +47,7 @@ struct ViewStats {
   std::vector<double> intervals;   // seconds between frames shown, from the first
   uint32_t resolutionChanges = 0;  // made by --target-fps
   uint32_t lastFrame = 0;          // the frame number of the last frame rendered
+  scene::Scene lastScene;          // the scene as it stood then (panel and script edits made)
 };
 
 // The framebuffer's size once the window is not minimised (until then it
@@ -272,6 +273,7 @@ ViewStats showFrames(const gpu::Context& ctx, Window& window, const ViewConfig& 
   if (stats.framesShown > 1) stats.secondsAfterFirst = std::chrono::duration<double>(lastShown - firstShown).count();
   stats.window = display.extent();
   stats.rendered = vk::Extent2D{last.width, last.height};
+  stats.lastScene = session.renderer().scene();
   if (governor) stats.resolutionChanges = governor->changes();
   return stats;
 }
@@ -310,7 +312,7 @@ int runViewer(const ViewConfig& config) {
                              (config.screenshot.empty() ? "" : ": no screenshot written"));
   }
   if (!config.screenshot.empty()) {
-    saveFrame(config.screenshot, last);
+    saveFrame(config.screenshot, last, stats.lastScene, stats.lastFrame);
     std::printf("wrote %s (frame %u, %ux%u)\n", config.screenshot.c_str(), stats.lastFrame, last.width, last.height);
   }
   return session.finish();

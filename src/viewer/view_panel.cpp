@@ -19,7 +19,6 @@ namespace {
 constexpr float kDragFraction = 0.005f;
 constexpr float kMinDragStep = 1e-3f;
 constexpr float kCountDragSpeed = 0.2f;
-constexpr float kPanelWidth = 420.0f;
 constexpr float kPanelMargin = 8.0f;
 const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
 
@@ -170,14 +169,24 @@ void showProfile(const render::RenderedFrame& frame) {
 
 }  // namespace
 
+PanelPlacement panelPlacement(float width, float height) {
+  const float third = width / 3.0f;
+  return {.x = kPanelMargin,
+          .y = kPanelMargin,
+          .width = std::clamp(third, kPanelMinWidth, kPanelMaxWidth),
+          .height = std::max(height - 2.0f * kPanelMargin, 0.0f),
+          .collapsed = third < kPanelMinWidth};
+}
+
 PanelRequests ViewPanel::draw(const scene::Scene& scene, const PanelStatus& status) {
   PanelRequests out;
   // While a widget is held, the draft keeps its edit; otherwise it follows
   // the scene (the mouse orbits the camera, a click adds a drop).
   if (!ImGui::IsAnyItemActive()) draft_ = scene;
-  ImGui::SetNextWindowPos(ImVec2(kPanelMargin, kPanelMargin), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, ImGui::GetIO().DisplaySize.y - 2.0f * kPanelMargin),
-                           ImGuiCond_FirstUseEver);
+  const PanelPlacement place = panelPlacement(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
+  ImGui::SetNextWindowPos(ImVec2(place.x, place.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(place.width, place.height), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(place.collapsed, ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("tidepool (F1 hides)")) {
     ImGui::End();
     return out;

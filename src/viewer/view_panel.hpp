@@ -20,6 +20,18 @@ struct PanelStatus {
   bool messageIsError = false;
 };
 
+// Where the panel first stands in a window of `width` x `height` pixels:
+// a third of the width at most (and kPanelMaxWidth), the window's height
+// less a margin; in a window too narrow for kPanelMinWidth to be a third,
+// started collapsed to its title bar, so the scene is seen first.
+struct PanelPlacement {
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+  bool collapsed = false;
+};
+constexpr float kPanelMaxWidth = 420.0f;
+constexpr float kPanelMinWidth = 300.0f;  // the widgets with their labels legible
+PanelPlacement panelPlacement(float width, float height);
+
 // What was asked for in the panel this frame, to apply through ViewSession.
 struct PanelRequests {
   std::optional<scene::Scene> scene;  // the parameters as edited (ViewSession::setScene)

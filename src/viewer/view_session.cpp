@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "base/atomic_file.hpp"
-#include "cli/build_version.hpp"
+#include "cli/frame_output.hpp"
 #include "gpu/spirv_library.hpp"
 #include "io/image_io.hpp"
 #include "scene/scene_file.hpp"
@@ -13,15 +13,12 @@
 
 namespace tp::app {
 
-void saveFrame(const std::string& path, const render::RenderedFrame& frame) {
+void saveFrame(const std::string& path, const render::RenderedFrame& frame, const scene::Scene& scene,
+               uint32_t frameNumber) {
   if (base::hasExtension(path, ".exr")) {
     io::FloatImage image{frame.width, frame.height, {"R", "G", "B", "A"}, frame.rgba};
     io::writeExr(path, image, std::vector<io::PixelType>(4, io::PixelType::Float),
-                 io::ExrAttributes{.hasCamera = true,
-                                   .worldToCamera = frame.worldToCamera,
-                                   .worldToNDC = frame.worldToNDC,
-                                   .linearRec709 = true,
-                                   .software = versionText()});
+                 frameExrAttributes(scene, frame, frameNumber));
   } else {
     io::writePng(path, frame.width, frame.height, frame.srgb);
   }
@@ -244,7 +241,7 @@ void ViewSession::renderAt(uint32_t width, uint32_t height) {
 void ViewSession::rendered(const render::RenderedFrame& frame) {
   if (saveAsked_) {
     const std::string path = savePath("view", ".exr", frame_);
-    saveFrame(path, frame);
+    saveFrame(path, frame, renderer_->scene(), frame_);
     std::printf("saved %s (frame %u)\n", path.c_str(), frame_);
     std::fflush(stdout);
     saveAsked_ = false;

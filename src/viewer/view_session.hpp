@@ -62,10 +62,12 @@ using ViewCommand = std::variant<command::Orbit, command::Zoom, command::Fly, co
 constexpr float kClickDropRadius = 0.15f;
 constexpr float kClickDropAmplitude = 0.03f;
 
-// Saves a rendered frame as `render` writes it: `.exr` float linear RGBA with
-// the camera attributes (the frame needs its HDR readback), `.png` the 8-bit
+// Saves a rendered frame, frame number `frameNumber` of `scene`, as `render`
+// writes it: `.exr` float linear RGBA with render's attributes
+// (frameExrAttributes; the frame needs its HDR readback), `.png` the 8-bit
 // sRGB frame; through a temporary file.
-void saveFrame(const std::string& path, const render::RenderedFrame& frame);
+void saveFrame(const std::string& path, const render::RenderedFrame& frame, const scene::Scene& scene,
+               uint32_t frameNumber);
 
 // The viewer's state between frames and the one handler of its commands,
 // whether they come from the window or from a script: the camera (a
