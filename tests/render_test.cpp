@@ -59,57 +59,6 @@ glm::vec3 pixel(const render::RenderedFrame& f, uint32_t x, uint32_t y) {
 
 using RenderTest = GpuTest;
 
-// The sky above the horizon of radiance L lights a surface tilted to normal n
-// with pi L (1 + n.y) / 2 (the upper hemisphere's part that n sees): pi L
-// facing up, half of it sideways, none facing down. The SH9 projection holds
-// this exactly (the step's band-2 coefficients vanish); what is left is the
-// midpoint rule's error in theta (128 steps: about dtheta^2 / 24 = 6e-6).
-// The ground of one albedo rho lit by the sun and a uniform sky sends up a
-// uniform radiance L = rho E / pi, E its irradiance (the sun's times the
-// cosine of its zenith angle, plus pi times the sky's radiance); a surface
-// of normal n takes pi L (1 - n.y) / 2 of it, the lower hemisphere's part
-// it sees: none facing up, half sideways, all facing down. SH9 holds this
-// step exactly, as it does the sky's above.
-TEST(GroundLight, TheGroundSendsUpItsAlbedoTimesItsIrradiance) {
-  scene::Scene s = uniformSkyScene();
-  s.ground.albedoA = s.ground.albedoB = glm::vec3(0.3f, 0.25f, 0.2f);
-  render::SkyLight light{glm::normalize(glm::vec3(0.5f, 0.6f, 0.2f)), glm::vec3(3.0f, 2.8f, 2.5f),
-                         render::skySh9(s.sky)};
-  const shader::Sh9 sh = render::groundLightSh9(s, light);
-  const glm::vec3 e = light.sunIrradiance * light.sunDirection.y + glm::pi<float>() * s.sky.zenith;
-  const glm::vec3 radiance = s.ground.albedoA * e / glm::pi<float>();
-  const glm::vec3 normals[] = {{0.0f, 1.0f, 0.0f},
-                               {1.0f, 0.0f, 0.0f},
-                               {0.0f, -1.0f, 0.0f},
-                               glm::normalize(glm::vec3(0.3f, -0.8f, -0.5f)),
-                               glm::normalize(glm::vec3(-0.6f, 0.2f, 0.7f))};
-  for (const glm::vec3& n : normals) {
-    const glm::vec3 got = shader::sh9Irradiance(sh, n);
-    for (int c = 0; c < 3; ++c) {
-      const float expected = glm::pi<float>() * radiance[c] * 0.5f * (1.0f - n.y);
-      EXPECT_NEAR(got[c], expected, 1e-3f * glm::pi<float>() * radiance[c]) << n.x << "," << n.y << "," << n.z;
-    }
-  }
-}
-
-TEST_F(RenderTest, SkyIrradianceOfAUniformSkyIsPiTimesItsRadiance) {
-  auto s = uniformSkyScene();
-  const shader::Sh9 sh = render::skySh9(s.sky);
-  const glm::vec3 normals[] = {{0.0f, 1.0f, 0.0f},
-                               {1.0f, 0.0f, 0.0f},
-                               {0.0f, 0.0f, -1.0f},
-                               {0.0f, -1.0f, 0.0f},
-                               glm::normalize(glm::vec3(0.3f, 0.8f, -0.5f)),
-                               glm::normalize(glm::vec3(-0.6f, -0.2f, 0.7f))};
-  for (const glm::vec3& n : normals) {
-    const glm::vec3 e = shader::sh9Irradiance(sh, n);
-    for (int c = 0; c < 3; ++c) {
-      const float expected = glm::pi<float>() * s.sky.zenith[c] * 0.5f * (1.0f + n.y);
-      EXPECT_NEAR(e[c], expected, 1e-4f * glm::pi<float>() * s.sky.zenith[c]) << n.x << "," << n.y << "," << n.z;
-    }
-  }
-}
-
 TEST_F(RenderTest, GroundIsLambertianUnderSunAndUniformSky) {
   const scene::Scene s = uniformSkyScene();
   render::Renderer renderer(ctx(), s, kWidth, kHeight);

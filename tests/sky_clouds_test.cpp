@@ -50,8 +50,9 @@ glm::dvec3 irradianceUp(const scene::Sky& sky) {
 // with int_0^1 (3x^2 - 2x^3) x dx = 3/4 - 2/5 = 0.35. The midpoint rule of
 // irradianceUp (128 steps in theta) meets w's second derivative, ~6/a^2,
 // over the fade band: an error of order 1e-4 of E, hence the 1e-3 below.
-// (The renderer lights with the SH9 projection of the same radiance,
-// render::skySh9, whose own accuracy the IBL tests check.)
+// (The renderer lights with a polynomial fit of the same radiance's
+// irradiance, render::sceneLight, whose own accuracy
+// tests/sky_irradiance_test.cpp checks.)
 TEST(SkyClouds, OvercastIrradianceMatchesTheClosedForm) {
   scene::Sky sky = uniformSky();
   sky.clouds.coverage = 1.0f;

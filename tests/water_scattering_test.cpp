@@ -45,7 +45,7 @@ glm::dvec3 integrand(const shader::FrameUniforms& frame, glm::vec3 start, glm::v
   const glm::dvec3 x = glm::dvec3(start) + s * glm::dvec3(dir);
   const double depth = kLevel - x.y;
   const glm::dvec3 ext(kExtinction), back = glm::exp(-ext * s);
-  const glm::dvec3 skyIrradiance(shader::sh9Irradiance(frame.skySh, glm::vec3(0.0f, 1.0f, 0.0f)));
+  const glm::dvec3 skyIrradiance(shader::skyIrradiance(frame.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)));
   glm::dvec3 light = skyIrradiance * glm::exp(-ext * depth) / (4.0 * glm::pi<double>());
   const glm::dvec3 toSun(frame.sunDirection);
   // Snell's law for the beam's angle from the vertical.
@@ -169,7 +169,7 @@ TEST(WaterScattering, SemiInfiniteSlabMatchesItsClosedForm) {
   const glm::vec3 toSun(frame.sunDirection);
   const double mu = std::sqrt(1.0 - (1.0 - toSun.y * toSun.y) / (kIor * kIor));
   const glm::dvec3 sun = glm::dvec3(frame.sunIrradiance) * double(toSun.y) / mu;
-  const glm::dvec3 sky(shader::sh9Irradiance(frame.skySh, glm::vec3(0.0f, 1.0f, 0.0f)));
+  const glm::dvec3 sky(shader::skyIrradiance(frame.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)));
   const glm::dvec3 ext(kExtinction), sigma{glm::vec3(kScattering)};
   const double iso = 1.0 / (4.0 * glm::pi<double>());
   // Down: the beam travels at mu below the horizon's normal; the path points down.

@@ -3,7 +3,7 @@
 #ifndef TP_SHARED_FRAME_H
 #define TP_SHARED_FRAME_H
 #include "shared/interop.h"
-#include "shared/sh9.h"
+#include "shared/sky_irradiance.h"
 #include "shared/shadow_casters.h"
 
 TP_BEGIN
@@ -18,7 +18,7 @@ struct FrameUniforms {
   vec4 sunIrradiance;          // rgb irradiance of the sun disk on a surface facing it
   vec4 viewport;               // width, height, 1/width, 1/height
   mat4 inverseProjection;      // clip to camera: view-space positions from the depth buffer
-  Sh9 skySh;                   // the sky's radiance above the horizon (without sun), for its irradiance (sh9.h)
+  SkyIrradiance skyIrradiance;  // the sky's light (without the sun) and the ground's: the irradiance (sky_irradiance.h)
   // x: the width in pixels that textures are filtered over: 1 for a frame on
   // its own, 1/sqrt(N) for one of N jittered samples (each sample's share of
   // the pixel), so the samples' average is the pixel's box filter, not a
@@ -43,7 +43,7 @@ TP_END
 #endif
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 144 + (2 + 3 * 4) * 16);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 31 * 16 + (2 + 3 * 4) * 16);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

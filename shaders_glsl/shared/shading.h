@@ -24,7 +24,7 @@ TP_BEGIN
 // sunVisibility, times the caustics under the water).
 TP_INLINE vec3 openAirIrradiance(FrameUniforms frame, vec3 n, float sunShare) {
   return sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
-         sh9Irradiance(frame.skySh, n);
+         skyIrradiance(frame.skyIrradiance, n);
 }
 
 TP_INLINE vec3 lambertRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {

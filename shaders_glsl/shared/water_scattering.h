@@ -94,7 +94,7 @@ TP_INLINE vec3 beamInScatter(vec3 extinction, vec3 scattering, vec3 beam, float 
 TP_INLINE vec3 waterInScatter(TP_FRAME_PARAM vec3 extinction, vec4 scattering, float level, float ior, uint pieces,
                               vec3 start, vec3 dir, float length) {
   float depth = level - start.y;
-  vec3 light = beamInScatter(extinction, vec3(scattering), sh9Irradiance(frame.skySh, vec3(0.0f, 1.0f, 0.0f)),
+  vec3 light = beamInScatter(extinction, vec3(scattering), skyIrradiance(frame.skyIrradiance, vec3(0.0f, 1.0f, 0.0f)),
                              1.0f / (4.0f * kPi), 1.0f, depth, dir.y, length);
   vec3 toSun = TP_SCATTER_TO_SUN;
   if (toSun.y <= 0.0f) return light;

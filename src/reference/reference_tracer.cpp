@@ -301,7 +301,7 @@ class Tracer {
     const float density = mean * std::exp(-mean * s) / reach;
     const glm::vec3 x = origin + s * dir;
     const float depth = level_ - x.y;
-    glm::vec3 light = shader::sh9Irradiance(uniforms_.skySh, glm::vec3(0.0f, 1.0f, 0.0f)) *
+    glm::vec3 light = shader::skyIrradiance(uniforms_.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)) *
                       glm::exp(-extinction_ * depth) / (4.0f * glm::pi<float>());
     const glm::vec3 toSun(uniforms_.sunDirection);
     if (toSun.y > 0.0f) {
@@ -451,12 +451,11 @@ RenderedFrame renderReference(const scene::Scene& scene, const sim::WaterState* 
                               uint32_t height, const ReferenceOptions& options) {
   if (options.samples == 0) throw std::invalid_argument("reference samples must be at least 1");
   std::optional<SkyImage> skyImage;
-  SkyLight light = proceduralSkyLight(scene.sky);
-  if (!scene.sky.image.empty()) {
-    skyImage = loadSkyImage(scene.sky);
-    light = skyImageLight(*skyImage);
-  }
-  const shader::FrameUniforms uniforms = frameUniforms(scene, withGroundLight(scene, light), width, height);
+  if (!scene.sky.image.empty()) skyImage = loadSkyImage(scene.sky);
+  const shader::SkyParams sky = skyParams(scene.sky);
+  const SkyLight light =
+      sceneLight(scene, [&](glm::vec3 d) { return skyRadianceWithout(sky, skyImage ? &*skyImage : nullptr, d); });
+  const shader::FrameUniforms uniforms = frameUniforms(scene, light, width, height);
   const Tracer tracer(scene, water, frame, uniforms, std::move(skyImage), options.maxSpecular);
   // Camera rays start in the water when the camera is under the surface.
   const bool cameraInWater = cameraMedium(scene, water).extinction.w > 0.0f;

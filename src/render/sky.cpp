@@ -23,24 +23,22 @@ Sky::Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, 
     const SkyImage image = loadSkyImage(scene.sky);
     image_ = uploadSkyImage(ctx, image, "sky image texture", skyMipLevels({image.width, image.height}));
     fillMips(ctx);
-    light_ = withGroundLight(scene, skyImageLight(image));
     ref_ = graph.image("sky", image_, vk::ImageLayout::eShaderReadOnlyOptimal);
     cpuImage_ = image;
+    light_ = sceneLight(scene, [this](glm::vec3 d) { return radiance(d); });
     return;
   }
   const vk::Extent2D extent{scene.sky.textureWidth, scene.sky.textureWidth / 2};
   image_ =
       gpu::createImage2D(ctx, extent, kSkyFormat, vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled,
                          "sky texture", skyMipLevels(extent));
-  light_ = withGroundLight(scene, proceduralSkyLight(scene.sky));
   ref_ = graph.image("sky", image_);
   params_ = skyParams(scene.sky);
+  light_ = sceneLight(scene, [this](glm::vec3 d) { return radiance(d); });
   skyPipeline_ = gpu::createComputePipeline(ctx, "sky.comp", sizeof(shader::SkyParams));
 }
 
-glm::vec3 Sky::radiance(glm::vec3 d) const {
-  return cpuImage_ ? skyImageRadiance(*cpuImage_, d) : shader::skyRadiance(params_, d, 0.0f);
-}
+glm::vec3 Sky::radiance(glm::vec3 d) const { return skyRadianceWithout(params_, cpuImage_ ? &*cpuImage_ : nullptr, d); }
 
 void Sky::fillMips(const gpu::Context& ctx) {
   gpu::DescriptorArena descriptors(ctx);

@@ -20,8 +20,8 @@ class Sky {
   // `gbuffer`: the surfaces' targets have the G-buffer.
   Sky(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene, bool gbuffer);
   GraphImage image() const { return ref_; }
-  // What lights the scene: the sun, and the sky's SH9 with the ground's
-  // light below the horizon (withGroundLight).
+  // What lights the scene: the sun, and the sky's irradiance with the
+  // ground's light below the horizon (sceneLight).
   const SkyLight& light() const { return light_; }
   // Its radiance along unit d without the sun's disc, on the CPU, as the
   // texture holds it (what bakes the pool's light: shading/pool_light.hpp).

@@ -10,7 +10,6 @@
 #include "gpu/barriers.hpp"
 #include "gpu/submit.hpp"
 #include "io/image_io.hpp"
-#include "render/env_sh.hpp"
 #include "shared/shading.h"
 #include "shared/sky.h"
 
@@ -54,8 +53,8 @@ SkyImage placeSkyImage(const SkyImage& image, float degrees, float intensity) {
   return placed;
 }
 
-SkyLight skyImageLight(const SkyImage& image) {
-  return SkyLight{glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), projectSh9(image, 0.5f * glm::pi<float>())};
+glm::vec3 skyRadianceWithout(const shader::SkyParams& procedural, const SkyImage* image, glm::vec3 d) {
+  return image ? skyImageRadiance(*image, d) : shader::skyRadiance(procedural, d, 0.0f);
 }
 
 glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d) {

@@ -27,13 +27,13 @@ SkyImage loadSkyImage(const scene::Sky& sky);
 // a whole number of texels, linear between two texels otherwise.
 SkyImage placeSkyImage(const SkyImage& image, float degrees, float intensity);
 
-// The light of a frame under the image: its radiance above the horizon in
-// SH9 (render/env_sh.hpp, exact for the texels), no sun.
-SkyLight skyImageLight(const SkyImage& image);
-
 // Radiance along unit direction d, bilinear between texel centres, wrapping
 // around in u and clamped in v, as the renderer's sampler reads the texture.
 glm::vec3 skyImageRadiance(const SkyImage& image, glm::vec3 d);
+
+// The sky's radiance along unit d without the sun's disc: the image's
+// (skyImageRadiance) where there is one, else the procedural sky's.
+glm::vec3 skyRadianceWithout(const shader::SkyParams& procedural, const SkyImage* image, glm::vec3 d);
 
 // The texture the sky pass fills from the procedural sky (sun included),
 // `width` x width / 2 texels at their centres, as the half floats it holds.

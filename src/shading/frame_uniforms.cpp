@@ -6,6 +6,7 @@
 
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
+#include "shading/sky_irradiance.hpp"
 #include "shading/sky_model.hpp"
 #include "shading/water_model.hpp"
 #include "shared/surface_pattern.h"
@@ -49,9 +50,9 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
   return c;
 }
 
-shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light) {
-  // The ground's mean albedo over a square about the pool, each point's
-  // pattern averaged over a metre (the tiles' and pavers' mean tone).
+glm::vec3 groundMeanAlbedo(const scene::Scene& scene) {
+  // Over a square about the pool, each point's pattern averaged over a
+  // metre (the tiles' and pavers' mean tone).
   const shader::GroundParams ground = groundParams(scene);
   const float hole = hasPool(scene) ? 0.5f * scene.water.extent : 0.0f;
   constexpr int kSteps = 32;
@@ -66,33 +67,28 @@ shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light) {
       ++n;
     }
   }
-  const glm::vec3 up(0.0f, 1.0f, 0.0f);
-  const glm::vec3 irradiance =
-      light.sunIrradiance * std::max(light.sunDirection.y, 0.0f) + shader::sh9Irradiance(light.skySh, up);
-  const glm::vec3 radiance = sum / float(std::max(n, 1)) * irradiance / glm::pi<float>();
-  // A uniform radiance over the lower hemisphere projects onto the zonal
-  // terms alone: their integrals over it, by the midpoint rule in theta.
-  constexpr int kTheta = 256;
-  double zonal[9] = {};
-  for (int t = 0; t < kTheta; ++t) {
-    const double theta = glm::half_pi<double>() * (1.0 + (t + 0.5) / kTheta);
-    const glm::vec3 d(float(std::sin(theta)), float(std::cos(theta)), 0.0f);
-    const double weight = glm::two_pi<double>() * std::sin(theta) * glm::half_pi<double>() / kTheta;
-    for (uint32_t k : {0u, 1u, 6u}) zonal[k] += weight * double(shader::sh9Basis(k, d));
-  }
-  shader::Sh9 sh{};
-  for (uint32_t k = 0; k < 9; ++k) sh.c[k] = glm::vec4(radiance * float(zonal[k]), 0.0f);
-  return sh;
+  return sum / float(std::max(n, 1));
 }
 
-SkyLight withGroundLight(const scene::Scene& scene, SkyLight light) {
-  const shader::Sh9 ground = groundLightSh9(scene, light);
-  for (uint32_t k = 0; k < 9; ++k) light.skySh.c[k] += ground.c[k];
+SkyLight sceneLight(const scene::Scene& scene, const SkyRadiance& sky) {
+  // Bins fine enough that the fit's error is the polynomial's, not theirs
+  // (a 2-degree blob's light is placed by its bin's centroid).
+  constexpr uint32_t kBands = 32, kAzimuths = 128, kSubsamples = 2;
+  SkyLight light;
+  if (scene.sky.image.empty()) {
+    light.sunDirection = sunDirection(scene.sky);
+    light.sunIrradiance = sunIrradiance(scene.sky);
+  }
+  const SkyBins bins(sky, kBands, kAzimuths, kSubsamples);
+  const glm::vec3 groundIrradiance = light.sunIrradiance * std::max(light.sunDirection.y, 0.0f) + bins.irradianceUp();
+  light.irradiance = fitSkyIrradiance(bins, groundMeanAlbedo(scene) * groundIrradiance / glm::pi<float>());
   return light;
 }
 
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, uint32_t width, uint32_t height) {
-  return frameUniforms(scene, withGroundLight(scene, proceduralSkyLight(scene.sky)), width, height);
+  const shader::SkyParams sky = skyParams(scene.sky);
+  return frameUniforms(scene, sceneLight(scene, [&](glm::vec3 d) { return shader::skyRadiance(sky, d, 0.0f); }), width,
+                       height);
 }
 
 shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& light, uint32_t width, uint32_t height,
@@ -112,7 +108,7 @@ shader::FrameUniforms frameUniforms(const scene::Scene& scene, const SkyLight& l
   u.sunIrradiance = glm::vec4(light.sunIrradiance, 0.0f);
   u.viewport = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
   u.inverseProjection = glm::inverse(u.projection);
-  u.skySh = light.skySh;
+  u.skyIrradiance = light.irradiance;
   // y: the uniform index base, 0 (shared/sun_shadow.h).
   u.sampling = glm::vec4(filterWidth, 0.0f, 0.0f, 0.0f);
   return u;

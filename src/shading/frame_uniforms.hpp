@@ -1,5 +1,6 @@
 #pragma once
 #include "scene/scene.hpp"
+#include "shading/sky_irradiance.hpp"
 #include "shading/sky_model.hpp"
 #include "shared/frame.h"
 
@@ -20,21 +21,19 @@ bool boxesCastShadows(const scene::Scene& scene);
 // walls; nothing with render.shadows off.
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
 
-// The light the scene's ground sends up, as SH9 of a uniform radiance below
-// the horizon: the ground's mean albedo near the pool (its hole left out)
-// times its irradiance from the sun (unshadowed) and the sky, over pi.
-// What lights the undersides of objects and the walls' lower parts; it adds
-// nothing to a surface facing up (SH9's bands 0-2 of a lower hemisphere
-// cancel there).
-shader::Sh9 groundLightSh9(const scene::Scene& scene, const SkyLight& light);
-// The sky's light with the ground's below the horizon added to its SH9:
-// the light a scene's frames take, made once where the sky is.
-SkyLight withGroundLight(const scene::Scene& scene, SkyLight light);
+// The ground's mean albedo near the pool (its hole left out).
+glm::vec3 groundMeanAlbedo(const scene::Scene& scene);
+// The light a scene's frames are lit by, made once where its sky is: the
+// sun (the procedural sky's; none under an image sky) and the irradiance of
+// `sky` (its radiance, without the sun's disc) above the horizon with the
+// ground's light below it, a uniform radiance: the ground's mean albedo
+// times its irradiance from the sun (unshadowed) and the sky, over pi. That
+// lights the undersides of objects and the walls' lower parts.
+SkyLight sceneLight(const scene::Scene& scene, const SkyRadiance& sky);
 
 // Fills the per-frame uniforms but for the shadows (none: the caller's to
 // set, from shadowCasters): camera matrices for a width x height image and
-// the light (the procedural sky's with the ground's, withGroundLight, when
-// none is given; as it is when given). `pixelOffset` moves where each pixel
+// the light (sceneLight of the procedural sky, when none is given). `pixelOffset` moves where each pixel
 // samples the image, in pixels from its centre (x right, y
 // down): the jitter of an anti-aliased frame's samples; `filterWidth` the
 // width in pixels textures are filtered over (FrameUniforms::sampling).

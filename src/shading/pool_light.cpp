@@ -15,8 +15,8 @@ namespace {
 
 // The sky straight through the window is summed over the upper hemisphere
 // cut in equal solid angles: this many bands of the cosine from the zenith,
-// and of azimuth; each holds the sky's mean over kSkySubsamples^2 points, so
-// that a bright blob smaller than a bin still brings its light.
+// and of azimuth (SkyBins); each holds the sky's mean over kSkySubsamples^2
+// points, so that a bright blob smaller than a bin still brings its light.
 constexpr uint32_t kSkyBands = 16, kSkyAzimuths = 64, kSkySubsamples = 4;
 // Cosine-weighted directions from each texel for the light that comes
 // back: the same Hammersley set for every texel, so that the error varies
@@ -38,20 +38,11 @@ class PoolLightBake {
  public:
   PoolLightBake(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices, const SkyRadiance& sky,
                 const PoolLightSun& sun)
-      : pool_(pool), vertices_(floorVertices.data()), sky_(sky), sun_(sun) {
-    for (uint32_t band = 0; band < kSkyBands; ++band) {
-      for (uint32_t a = 0; a < kSkyAzimuths; ++a) {
-        glm::vec3 sum(0.0f);
-        for (uint32_t k = 0; k < kSkySubsamples * kSkySubsamples; ++k) {
-          const float up = (float(band) + (float(k / kSkySubsamples) + 0.5f) / kSkySubsamples) / kSkyBands;
-          const float phi = (float(a) + (float(k % kSkySubsamples) + 0.5f) / kSkySubsamples) / kSkyAzimuths;
-          sum += sky(skyDirection(up, phi));
-        }
-        const float solidAngle = glm::two_pi<float>() / float(kSkyBands * kSkyAzimuths);
-        const glm::vec3 centre = skyDirection((float(band) + 0.5f) / kSkyBands, (float(a) + 0.5f) / kSkyAzimuths);
-        skyBins_.push_back({centre, sum * (solidAngle / float(kSkySubsamples * kSkySubsamples))});
-      }
-    }
+      : pool_(pool),
+        vertices_(floorVertices.data()),
+        sky_(sky),
+        skyBins_(sky, kSkyBands, kSkyAzimuths, kSkySubsamples),
+        sun_(sun) {
     frame_.sunDirection = glm::vec4(sun.direction, 0.0f);
     frame_.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
     ior_ = pool.water.y;
@@ -138,18 +129,6 @@ class PoolLightBake {
   }
 
  private:
-  struct SkyBin {
-    glm::vec3 direction;  // its centre, in the air
-    glm::vec3 light;      // the sky's mean radiance over it times its solid angle
-  };
-
-  // The upward direction at `up` (the cosine from the zenith) and `phi`
-  // (turns of azimuth).
-  static glm::vec3 skyDirection(float up, float phi) {
-    const float across = std::sqrt(std::max(0.0f, 1.0f - up * up)), a = glm::two_pi<float>() * phi;
-    return {across * std::cos(a), up, across * std::sin(a)};
-  }
-
   // The sky straight through the flat surface onto p with normal n: over
   // the air's directions, Fresnel's transmission, the absorption along the
   // refracted line, and the solid angle the water compresses (cos in the
@@ -157,7 +136,7 @@ class PoolLightBake {
   // 1 / n^2 cancel), where the line clears the walls.
   glm::vec3 window(glm::vec3 p, glm::vec3 n) const {
     glm::vec3 sum(0.0f);
-    for (const SkyBin& bin : skyBins_) {
+    for (const SkyBins::Bin& bin : skyBins_.bins()) {
       const glm::vec3 up = refractedUp(bin.direction);
       const float facing = glm::dot(n, up);
       if (facing <= 0.0f) continue;
@@ -230,7 +209,7 @@ class PoolLightBake {
   shader::PoolParams pool_;
   const glm::vec4* vertices_;
   const SkyRadiance& sky_;
-  std::vector<SkyBin> skyBins_;
+  SkyBins skyBins_;
   PoolLightSun sun_;
   shader::FrameUniforms frame_{};
   float ior_ = 1.0f, level_ = 0.0f;

@@ -3,12 +3,10 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "shading/sky_irradiance.hpp"
 #include "shared/pool.h"
 
 namespace tp::render {
-
-// The sky's radiance along a unit direction, without the sun's disc.
-using SkyRadiance = std::function<glm::vec3(glm::vec3)>;
 
 // The sun as the bake takes it: where it is and its irradiance on a surface
 // facing it (none for an image sky).

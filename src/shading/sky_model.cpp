@@ -38,29 +38,4 @@ glm::vec3 sunIrradiance(const scene::Sky& sky) {
   return sky.sunRadiance * solidAngle;
 }
 
-shader::Sh9 skySh9(const scene::Sky& sky) {
-  // Midpoint rule in (theta, phi) over the upper hemisphere; the sky is smooth
-  // apart from the sun disk, which is left out here and lit separately.
-  constexpr int kTheta = 128, kPhi = 256;
-  const shader::SkyParams p = skyParams(sky);
-  const double dTheta = glm::half_pi<double>() / kTheta, dPhi = glm::two_pi<double>() / kPhi;
-  glm::dvec3 sum[9] = {};
-  for (int i = 0; i < kTheta; ++i) {
-    const double theta = (i + 0.5) * dTheta;
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = (j + 0.5) * dPhi;
-      glm::vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-      const glm::dvec3 weighted = glm::dvec3(shader::skyRadiance(p, d, 0.0f)) * std::sin(theta) * dTheta * dPhi;
-      for (uint32_t k = 0; k < 9; ++k) sum[k] += weighted * double(shader::sh9Basis(k, d));
-    }
-  }
-  shader::Sh9 sh{};
-  for (int k = 0; k < 9; ++k) sh.c[k] = glm::vec4(glm::vec3(sum[k]), 0.0f);
-  return sh;
-}
-
-SkyLight proceduralSkyLight(const scene::Sky& sky) {
-  return SkyLight{sunDirection(sky), sunIrradiance(sky), skySh9(sky)};
-}
-
 }  // namespace tp::render
