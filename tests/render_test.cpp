@@ -559,10 +559,13 @@ TEST_F(SkyImageTest, ConstantSkyImageLightsTheGroundExactly) {
       const glm::vec3 d = pixelRay(u, x, y);
       const glm::vec3 got = pixel(frame, x, y);
       if (d.y < -0.05f) {
-        // The image's SH9 projection is exact texel by texel (render/env_sh.hpp)
-        // and holds the upper hemisphere's irradiance exactly: float round-off.
+        // The irradiance is fitted from the sky's bins (sceneLight), whose
+        // sum of the clamped cosine is a quadrature: measured 1.4e-4 of
+        // pi L here and in SkyIrradiance.UniformSkyOverUniformGroundIsExact
+        // (the exact texel-by-texel SH9 it replaced gave float round-off,
+        // 1e-5, and SH9's bias under a peaked sky).
         for (int c = 0; c < 3; ++c) {
-          ASSERT_NEAR(got[c], s.ground.albedoA[c] * radiance[c], 1e-5f * radiance[c]) << x << "," << y;
+          ASSERT_NEAR(got[c], s.ground.albedoA[c] * radiance[c], 3e-4f * radiance[c]) << x << "," << y;
         }
         ++ground;
       } else if (d.y > 0.05f) {
