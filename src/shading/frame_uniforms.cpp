@@ -50,6 +50,9 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
   return c;
 }
 
+namespace {
+
+// The ground's mean albedo near the pool (its hole left out).
 glm::vec3 groundMeanAlbedo(const scene::Scene& scene) {
   // Over a square about the pool, each point's pattern averaged over a
   // metre (the tiles' and pavers' mean tone).
@@ -69,6 +72,8 @@ glm::vec3 groundMeanAlbedo(const scene::Scene& scene) {
   }
   return sum / float(std::max(n, 1));
 }
+
+}  // namespace
 
 SkyLight sceneLight(const scene::Scene& scene, const SkyRadiance& sky) {
   // Bins fine enough that the fit's error is the polynomial's, not theirs

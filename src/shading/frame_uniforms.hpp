@@ -21,8 +21,6 @@ bool boxesCastShadows(const scene::Scene& scene);
 // walls; nothing with render.shadows off.
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
 
-// The ground's mean albedo near the pool (its hole left out).
-glm::vec3 groundMeanAlbedo(const scene::Scene& scene);
 // The light a scene's frames are lit by, made once where its sky is: the
 // sun (the procedural sky's; none under an image sky) and the irradiance of
 // `sky` (its radiance, without the sun's disc) above the horizon with the
