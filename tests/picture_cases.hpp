@@ -44,15 +44,18 @@ inline std::string pictureSceneArgs(const PictureCase& c) {
   return args;
 }
 
+// A pixel is off where a channel differs by more than this many 8-bit levels.
+constexpr int kPictureLevelsOff = 8;
+
 struct PictureDifference {
   double rmse = 0.0;  // of the R, G and B levels, 0 to 255
-  size_t off = 0;     // pixels with a channel off by more than `offBy` levels
+  size_t off = 0;     // pixels with a channel off by more than kPictureLevelsOff levels
   size_t pixels = 0;
 };
 
 // Two pictures of one size (values 0 to 1, sRGB encoded) in 8-bit levels;
 // the alpha (always 1) left out.
-inline PictureDifference pictureDifference(const io::FloatImage& a, const io::FloatImage& b, int offBy = 8) {
+inline PictureDifference pictureDifference(const io::FloatImage& a, const io::FloatImage& b) {
   PictureDifference d;
   EXPECT_EQ(a.width, b.width);
   EXPECT_EQ(a.height, b.height);
@@ -69,7 +72,7 @@ inline PictureDifference pictureDifference(const io::FloatImage& a, const io::Fl
       worst = std::max(worst, std::abs(x - y));
       sumSquares += double(x - y) * (x - y);
     }
-    d.off += worst > offBy;
+    d.off += worst > kPictureLevelsOff;
   }
   d.rmse = std::sqrt(sumSquares / double(d.pixels * 3));
   return d;
@@ -81,7 +84,8 @@ inline PictureDifference pictureDifference(const io::FloatImage& a, const io::Fl
 // change to shading, geometry or the camera moves far more (docs/testing.md
 // has the figures). `remedy`: how to make the pictures again when it is meant.
 inline void expectRenderedAgain(const PictureDifference& d, const std::string& name, const std::string& remedy) {
-  std::printf("%s: RMSE %.3f of 255, %zu of %zu pixels off by more than 8\n", name.c_str(), d.rmse, d.off, d.pixels);
+  std::printf("%s: RMSE %.3f of 255, %zu of %zu pixels off by more than %d\n", name.c_str(), d.rmse, d.off, d.pixels,
+              kPictureLevelsOff);
   EXPECT_LT(d.rmse, 1.0) << name << ": " << remedy;
   EXPECT_LE(d.off, d.pixels / 200) << name;
 }
