@@ -14,6 +14,7 @@
 #define TP_SPEC_GLOSSY 102          // a surface has a glossy lobe (lib/glossy_lookup.glsl)
 #define TP_SPEC_BRICK_WALLS 103     // the pool's walls are brick (shared/pool.h)
 #define TP_SPEC_TILES 104           // a plane is tiled or paved (shared/surface_pattern.h)
+#define TP_SPEC_GLASS_SHADOWS 105   // glass spheres shade and focus the sun (shared/sun_shadow.h)
 // The resolve pass's (resolve.comp, render/frame_resolve.cpp).
 #define TP_SPEC_HAZE 110       // the scene has haze (shared/haze.h)
 #define TP_SPEC_STORE_HDR 111  // the frame's HDR colour is read back: store what the pass made of it
@@ -26,6 +27,7 @@ const bool kBoxShadows = true;
 const bool kGlossySurfaces = true;
 const bool kBrickWalls = true;
 const bool kTiledSurfaces = true;
+const bool kGlassShadows = true;
 TP_END
 #else
 layout(constant_id = TP_SPEC_SPHERE_SHADOWS) const bool kSphereShadows = true;
@@ -33,6 +35,7 @@ layout(constant_id = TP_SPEC_BOX_SHADOWS) const bool kBoxShadows = true;
 layout(constant_id = TP_SPEC_GLOSSY) const bool kGlossySurfaces = true;
 layout(constant_id = TP_SPEC_BRICK_WALLS) const bool kBrickWalls = true;
 layout(constant_id = TP_SPEC_TILES) const bool kTiledSurfaces = true;
+layout(constant_id = TP_SPEC_GLASS_SHADOWS) const bool kGlassShadows = true;
 #endif
 
 #endif

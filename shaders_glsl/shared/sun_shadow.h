@@ -1,8 +1,10 @@
 // Sun shadows: the share of the sun's disc a point sees past the opaque
-// spheres, the boxes and the pool's walls, for every diffuse surface's sun
-// term (shading.h). Shared with C++ to test it against closed forms and
-// against rays sampled over the disc; the reference does not use it: it
-// traces its own shadow rays (reference_tracer.cpp).
+// spheres, the boxes and the pool's walls, and the light the glass spheres
+// in the air shade and focus, for every diffuse surface's sun term
+// (shading.h). Shared with C++ to test it against closed forms and
+// against rays sampled over the disc; the raster's model traced takes only
+// the glass spheres' tables from it and traces its own shadow rays
+// (reference_tracer.cpp).
 //
 // Under the water the shadow ray is bent as through flat water: from the
 // point up along the sun's refracted direction to the surface, then on
@@ -27,6 +29,10 @@
 #define TP_CASTERS casters
 #define TP_CASTERS_SUN(i) casters.sun[i]
 #define TP_CASTERS_POOL(i) casters.pool[i]
+#define TP_CASTERS_GLASS(i) casters.glass[i]
+#define TP_GLASS_PARAM const GlassTables &tables,
+#define TP_GLASS_ARG tables,
+#define TP_GLASS_TABLE(i) tables.values[i]
 #else
 #define TP_CASTERS_PARAM
 #define TP_CASTERS_ARG
@@ -38,6 +44,14 @@
 // (docs/sun-shadows.md#cost).
 #define TP_CASTERS_SUN(i) frame.shadows.sun[TP_UNIFORM_INDEX_BASE + (i)]
 #define TP_CASTERS_POOL(i) frame.shadows.pool[TP_UNIFORM_INDEX_BASE + (i)]
+#define TP_CASTERS_GLASS(i) frame.shadows.glass[TP_UNIFORM_INDEX_BASE + (i)]
+// The glass spheres' tables: in a storage buffer of their own. In the
+// frame's uniforms, 16 KB of them made lavapipe slow to create every
+// pipeline: a render started 2.7 s later.
+#define TP_GLASS_PARAM
+#define TP_GLASS_ARG
+#define TP_GLASS_TABLE(i) glassTables[i]
+layout(binding = TP_GLASS_TABLES_BINDING) readonly buffer GlassTableValues { float glassTables[]; };
 #endif
 
 TP_BEGIN
@@ -252,9 +266,55 @@ TP_INLINE float sunRayOpen(TP_CASTERS_PARAM vec3 p, vec3 toSun) {
   return open;
 }
 
+// Glass sphere `slot`'s table at `across` radii from its axis (less than
+// TP_GLASS_TABLE_REACH) and `along` radii past its centre (>= 0): between
+// its four nearest values; past the last row, the last row's.
+TP_INLINE float glassTableAt(TP_GLASS_PARAM uint slot, float across, float along) {
+  float u = across * float(TP_GLASS_TABLE_COLUMNS - 1) / float(TP_GLASS_TABLE_REACH);
+  float v = min(along / float(TP_GLASS_TABLE_DEPTH), 1.0f) * float(TP_GLASS_TABLE_ROWS - 1);
+  uint column = min(uint(u), uint(TP_GLASS_TABLE_COLUMNS - 2)), row = min(uint(v), uint(TP_GLASS_TABLE_ROWS - 2));
+  float fu = u - float(column), fv = v - float(row);
+  uint at = slot * uint(TP_GLASS_TABLE_SIZE) + row * uint(TP_GLASS_TABLE_COLUMNS) + column;
+  float near = mix(TP_GLASS_TABLE(at), TP_GLASS_TABLE(at + 1u), fu);
+  float far = mix(TP_GLASS_TABLE(at + uint(TP_GLASS_TABLE_COLUMNS)), TP_GLASS_TABLE(at + uint(TP_GLASS_TABLE_COLUMNS) + 1u), fu);
+  return mix(near, far, fv);
+}
+
+// The sun at p relative to the open sun past the glass spheres in the air,
+// for a point in the air: their shadows and caustics, from their tables
+// (shading/glass_caustic.hpp).
+TP_INLINE float glassSunShareInAir(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 toSun) {
+  float share = 1.0f;
+  for (uint i = 0u; i < (kGlassShadows && toSun.y > 0.0f ? uint(TP_CASTERS_GLASS(0)) : 0u); ++i) {
+    vec4 s = TP_CASTERS.glassSpheres[i];
+    vec3 v = (p - vec3(s)) / s.w;
+    float along = -dot(v, toSun), across2 = max(dot(v, v) - along * along, 0.0f);
+    // The table read in a loop only the pixels in its reach enter: lavapipe
+    // runs both sides of an if for every pixel, and skips a loop none is in.
+    bool reached = along >= 0.0f && across2 < float(TP_GLASS_TABLE_REACH * TP_GLASS_TABLE_REACH);
+    for (int k = 0; k < (reached ? 1 : 0); ++k) share *= glassTableAt(TP_GLASS_ARG i, sqrt(across2), along);
+  }
+  return share;
+}
+
+// The same for any point: under the water it is read on the sun's ray up
+// from p, past where that ray leaves the water by its leg under the water
+// times how much the water narrows the disc (as sunVisibility widens the
+// disc for the casters).
+TP_INLINE float glassSunShare(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 toSun) {
+  if (!kGlassShadows || toSun.y <= 0.0f) return 1.0f;
+  float h = TP_CASTERS_POOL(0), level = TP_CASTERS_POOL(2);
+  bool underWater = TP_CASTERS_SUN(3) > 0.0f && max(abs(p.x), abs(p.z)) <= h && p.y < level;
+  vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / TP_CASTERS_POOL(3)) : toSun;
+  vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
+  float narrowing = underWater ? sqrt(toSun.y / inWater.y) / TP_CASTERS_POOL(3) : 1.0f;
+  return glassSunShareInAir(TP_CASTERS_ARG TP_GLASS_ARG q - toSun * (narrowing * distance(p, q)), toSun);
+}
+
 #ifndef __cplusplus
-// The share of the sun's disc the frame's casters leave in view at p; all of
-// it in the variants for scenes where nothing casts a shadow (TP_NO_SHADOWS,
+// The share of the sun's disc the frame's casters leave in view at p, times
+// what the glass spheres let through (glassSunShare); all of it in the
+// variants for scenes where nothing casts a shadow (TP_NO_SHADOWS,
 // cmake/shaders.cmake), which hold none of the code above.
 // And whether the sun's central ray from p is open (sunRayOpen).
 // And the share for a point out of the pool (openAirSunVisibility).
@@ -268,9 +328,9 @@ float frameSunShare(vec3 p) { return 1.0; }
 float frameSunRayOpen(vec3 p) { return 1.0; }
 float frameOpenAirSunShare(vec3 p) { return 1.0; }
 #else
-float frameSunShare(vec3 p) { return sunVisibility(p, frameToSun()); }
+float frameSunShare(vec3 p) { return sunVisibility(p, frameToSun()) * glassSunShare(p, frameToSun()); }
 float frameSunRayOpen(vec3 p) { return sunRayOpen(p, frameToSun()); }
-float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, frameToSun()); }
+float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, frameToSun()) * glassSunShareInAir(p, frameToSun()); }
 #endif
 #endif
 

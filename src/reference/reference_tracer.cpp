@@ -15,6 +15,7 @@
 #include "reference/row_progress.hpp"
 #include "render/sky_image.hpp"
 #include "shading/frame_uniforms.hpp"
+#include "shading/glass_caustic.hpp"
 #include "shading/glossy_model.hpp"
 #include "shading/hammersley.hpp"
 #include "shading/objects_model.hpp"
@@ -29,6 +30,7 @@
 #include "shared/pool_light.h"
 #include "shared/shading.h"
 #include "shared/sky.h"
+#include "shared/sun_shadow.h"
 #include "shared/water_scattering.h"
 
 namespace tp::render {
@@ -145,6 +147,8 @@ class Tracer {
       traced.push_back(std::move(mesh));
     }
     for (const scene::Sphere& sphere : placed.spheres) (scene::isGlass(sphere) ? glass_ : spheres_).push_back(sphere);
+    casters_ = shadowCasters(scene, time);
+    GlassTableCache().fill(scene, time, *glassTables_);
     if (water) waterNormals_ = waterVertexNormals(*water, scene.water.extent);
     if (water && scene.render.caustics) {
       CausticReceivers receivers{{}, spheres_};
@@ -218,7 +222,7 @@ class Tracer {
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
       return glossy(sphere.albedo / glm::pi<float>() *
-                        shader::objectIrradiance(pool_, uniforms_, p, n, sunShare(p, path.sun) * focus(p)),
+                        shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p)),
                     dir, n, glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
@@ -226,26 +230,26 @@ class Tracer {
       case Material::Ground: {
         const glm::vec3 n(0.0f, 1.0f, 0.0f);
         if (first) *first = {p, n};
-        return shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, sunShare(p, path.sun));
+        return shader::groundRadiance(ground_, uniforms_, xz, glm::vec2(0.0f), n, surfaceSun(p, path));
       }
       case Material::PoolWalls: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
-        return glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f),
-                                               sunShare(p, path.sun) * focus(p), floorVertices_.data()),
+        return glossy(shader::poolWallRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), surfaceSun(p, path) * focus(p),
+                                               floorVertices_.data()),
                       dir, n, glm::vec2(pool_.wallGloss));
       }
       case Material::PoolFloor: {
         const glm::vec3 n = shader::poolFloorMeshNormal(pool_, xz, floorVertices_.data());
         if (first) *first = {p, n};
-        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), sunShare(p, path.sun) * focus(p),
+        return shader::poolFloorRadiance(pool_, uniforms_, p, n, glm::vec2(0.0f), surfaceSun(p, path) * focus(p),
                                          floorVertices_.data());
       }
       case Material::Box: {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
         return albedo_[size_t(hit.mesh)] / glm::pi<float>() *
-               shader::objectIrradiance(pool_, uniforms_, p, n, sunShare(p, path.sun) * focus(p));
+               shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p));
       }
       case Material::Water:
         return water(p, dir, hit, specular, path, first);
@@ -285,6 +289,13 @@ class Tracer {
     const float toSurface = (level_ - p.y) / inWater.y;
     if (blocked(p, inWater, toSurface)) return 0.0f;
     return blocked(p + toSurface * inWater, dir, std::numeric_limits<float>::infinity()) ? 0.0f : 1.0f;
+  }
+
+  // The sun's share at a surface's point p: past the casters (sunShare),
+  // times what the glass spheres in the air let through, from the raster's
+  // tables (shared/sun_shadow.h's glassSunShare, shading/glass_caustic.hpp).
+  float surfaceSun(glm::vec3 p, PathSample path) const {
+    return sunShare(p, path.sun) * shader::glassSunShare(casters_, *glassTables_, p, glm::vec3(uniforms_.sunDirection));
   }
 
   // What the water on origin + s dir, 0 < s < length, scatters towards
@@ -442,6 +453,8 @@ class Tracer {
   std::vector<scene::Sphere> spheres_;                 // the Lambertian ones, where they are at the frame's time
   std::vector<scene::Sphere> glass_;                   // the glass ones
   std::vector<shader::GlassBoxParams> glassBoxes_;     // the glass boxes, cast exactly
+  shader::ShadowCasters casters_{};                    // the raster's, for its glass spheres' tables
+  std::unique_ptr<shader::GlassTables> glassTables_ = std::make_unique<shader::GlassTables>();
   std::unique_ptr<ReferenceScene> bvh_;
 };
 

@@ -87,7 +87,9 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
              [this, in, &spheres](PassBuilder& pass) {
                const gpu::Image& backFaces = pass.attach(backFacesRef_, Use::ColorWrite);
                const gpu::Image& depth = pass.attach(depthRef_, Use::DepthWrite);
-               Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+               Bindings& set = pass.bindings()
+                                   .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData);
                return [this, &backFaces, &depth, &set, &spheres](PassContext& pc) {
                  const auto& cmd = pc.cmd;
                  auto target =
@@ -111,6 +113,7 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
                const gpu::Image& depth = pass.attach(frame.depth, Use::DepthReadWrite);
                Bindings& set = pass.bindings()
                                    .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                                    .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
                                    .sampledImage(2, backFacesRef_, in.nearest, Use::FragmentSample)
                                    .constantBuffer(3, *pool_.uniforms)

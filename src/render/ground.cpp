@@ -22,6 +22,7 @@ FragmentNeeds unshadowedNeeds(FragmentNeeds surfaces) {
   FragmentNeeds needs = groundNeeds(surfaces);
   needs.sphereShadows = false;
   needs.boxShadows = false;
+  needs.glassShadows = false;
   return needs;
 }
 
@@ -46,7 +47,7 @@ Ground::Ground(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& s
     own_.normal = graph.image("ground view normal", normal_);
     own_.ambient = graph.image("ground ambient", ambient_);
   }
-  if (needs.sphereShadows || needs.boxShadows) {
+  if (needs.sphereShadows || needs.boxShadows || needs.glassShadows) {
     unshadowed_.emplace(gpu::createGraphicsPipeline(
         ctx, opaquePipeline("ground.vert", "ground.frag", sizeof(shader::GroundParams), unshadowedNeeds(needs))));
   }
@@ -59,7 +60,9 @@ void Ground::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fra
   graph.pass(passes::kGround,
              [this, in, outOfObjectShadows, &sky](PassBuilder& pass) {
                attachSurfaces(pass, own_, true);
-               Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
+               Bindings& set = pass.bindings()
+                                   .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData);
                auto drawSky = sky(pass);
                return [this, &set, outOfObjectShadows, drawSky](PassContext& pc) {
                  drawnSinceCopy_ = true;

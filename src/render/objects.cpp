@@ -23,6 +23,7 @@ void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fr
                attachSurfaces(pass, targets, false);
                Bindings& set = pass.bindings()
                                    .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                                    .uniformBuffer(1, in.medium, Use::FragmentUniformRead)
                                    .sampledImage(2, in.glossy, in.equirect, Use::FragmentSample)
                                    .constantBuffer(3, *poolUniforms_)

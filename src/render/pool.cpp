@@ -100,6 +100,7 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
                const gpu::Image& target = pass.attach(draw_.caustics, Use::ColorWrite);
                Bindings& set = pass.bindings()
                                    .uniformBuffer(0, in.uniforms, Use::HostData)
+                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                                    .storageBuffer(2, water.state, Use::VertexStorageRead)
                                    .constantBuffer(3, uniforms_);
                return [this, water, &target, &set](PassContext& pc) {
@@ -122,6 +123,7 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
     attachSurfaces(pass, targets, false);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                         .constantBuffer(1, uniforms_)
                         .sampledImage(2, draw_.caustics, in.clamp, Use::FragmentSample)
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)

@@ -28,6 +28,7 @@
 #include "render/water_surface.hpp"
 #include "shading/frame_uniforms.hpp"
 #include "shading/frustum.hpp"
+#include "shading/glass_caustic.hpp"
 #include "shading/grid_detail.hpp"
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
@@ -65,6 +66,9 @@ struct Renderer::Resources {
         uniforms(gpu::createBuffer(ctx, sizeof(shader::FrameUniforms), vk::BufferUsageFlagBits::eUniformBuffer,
                                    gpu::MemoryUse::Upload, "frame uniforms")),
         uniformsRef(graph.buffer("frame uniforms", uniforms)),
+        glassTables(gpu::createBuffer(ctx, sizeof(shader::GlassTables), vk::BufferUsageFlagBits::eStorageBuffer,
+                                      gpu::MemoryUse::Upload, "glass sun tables")),
+        glassTablesRef(graph.buffer("glass sun tables", glassTables)),
         // Filled before each frame: the spheres may move.
         objectUniforms(gpu::createBuffer(ctx, sizeof(shader::SceneObjects), vk::BufferUsageFlagBits::eUniformBuffer,
                                          gpu::MemoryUse::Upload, "scene objects")),
@@ -77,8 +81,8 @@ struct Renderer::Resources {
         medium(ctx, graph, scene.water.enabled),
         ground(ctx, graph, scene, needs, frame, targets.surfaces().gbuffer()) {
     graph.setCaching(skipping);
-    const FrameInputs in{uniformsRef,        sky.image(),       glossy.image(), medium.buffer(),
-                         *samplers.equirect, *samplers.nearest, *samplers.clamp};
+    const FrameInputs in{uniformsRef,     glassTablesRef,     sky.image(),       glossy.image(),
+                         medium.buffer(), *samplers.equirect, *samplers.nearest, *samplers.clamp};
     const SurfaceTargets& surfaces = targets.surfaces();
     if (scene.water.enabled) declareWater(ctx, scene, frame, in);
     stillInPart = stillFramesInPart(scene);
@@ -334,6 +338,9 @@ struct Renderer::Resources {
   Samplers samplers;
   gpu::Buffer uniforms;
   GraphBuffer uniformsRef;
+  gpu::Buffer glassTables;  // shader::GlassTables, filled from glassTableCache
+  GraphBuffer glassTablesRef;
+  GlassTableCache glassTableCache;
   gpu::Buffer objectUniforms;  // the objects the rays cast in shaders meet (shader::SceneObjects)
   FrameTargets targets;
   FragmentNeeds needs;  // what the surfaces' shaders need of the scene
@@ -491,6 +498,8 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
     std::memcpy(res_->uniforms.mapped, &uniforms, sizeof(uniforms));
     res_->graph.touch(res_->uniformsRef.ref);
   }
+  if (res_->glassTableCache.fill(scene_, time, *static_cast<shader::GlassTables*>(res_->glassTables.mapped)))
+    res_->graph.touch(res_->glassTablesRef.ref);
   // The camera's matrices, without the sample's jitter.
   const shader::FrameUniforms centred = frameUniforms(scene_, res_->sky.light(), width_, height_);
   out.worldToCamera = centred.view;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "shading/frame_uniforms.hpp"
+#include "shading/glass_caustic.hpp"
 #include "shading/glossy_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
@@ -105,6 +106,7 @@ FragmentNeeds surfaceNeeds(const scene::Scene& scene, bool gbuffer, bool skippin
           .scattering = hasWaterScattering(scene),
           .sphereShadows = !skipping || spheresCastShadows(scene),
           .boxShadows = !skipping || boxesCastShadows(scene),
+          .glassShadows = !skipping || glassCastsShadows(scene),
           .glossy = !skipping || hasGlossySurface(scene),
           .brickWalls = !skipping || hasBrickWalls(scene),
           .tiles = !skipping || hasTiledSurface(scene)};
@@ -114,6 +116,7 @@ gpu::Specialization fragmentSpecialization(FragmentNeeds needs) {
   return gpu::Specialization()
       .set(TP_SPEC_SPHERE_SHADOWS, uint32_t(needs.sphereShadows))
       .set(TP_SPEC_BOX_SHADOWS, uint32_t(needs.boxShadows))
+      .set(TP_SPEC_GLASS_SHADOWS, uint32_t(needs.glassShadows))
       .set(TP_SPEC_GLOSSY, uint32_t(needs.glossy))
       .set(TP_SPEC_BRICK_WALLS, uint32_t(needs.brickWalls))
       .set(TP_SPEC_TILES, uint32_t(needs.tiles));

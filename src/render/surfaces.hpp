@@ -10,6 +10,7 @@
 #include "gpu/pipeline.hpp"
 #include "graph/frame_graph.hpp"
 #include "scene/scene.hpp"
+#include "shared/shadow_casters.h"
 
 namespace tp::render {
 
@@ -32,13 +33,14 @@ struct SurfaceTargets {
 
 // What the passes of every feature may read, made before any of them.
 struct FrameInputs {
-  GraphBuffer uniforms;  // the frame's uniforms, filled by the host before each frame
-  GraphImage sky;        // the equirectangular sky
-  GraphImage glossy;     // the glossy environment (shared/glossy.h), or one black texel
-  GraphBuffer medium;    // the medium around the camera (camera_medium.comp), or air
-  vk::Sampler equirect;  // around in u, clamped at the poles, through every mip level
-  vk::Sampler nearest;   // texel fetches
-  vk::Sampler clamp;     // linear, clamped
+  GraphBuffer uniforms;     // the frame's uniforms, filled by the host before each frame
+  GraphBuffer glassTables;  // the glass spheres' sun tables (shared/shadow_casters.h), filled the same way
+  GraphImage sky;           // the equirectangular sky
+  GraphImage glossy;        // the glossy environment (shared/glossy.h), or one black texel
+  GraphBuffer medium;       // the medium around the camera (camera_medium.comp), or air
+  vk::Sampler equirect;     // around in u, clamped at the poles, through every mip level
+  vk::Sampler nearest;      // texel fetches
+  vk::Sampler clamp;        // linear, clamped
 };
 
 // The frame's samplers (FrameInputs'), made once.
@@ -84,6 +86,7 @@ struct FragmentNeeds {
   bool glass = false;
   bool sphereShadows = true;
   bool boxShadows = true;
+  bool glassShadows = true;
   bool glossy = true;
   bool brickWalls = true;
   bool tiles = true;

@@ -68,6 +68,7 @@ void WaterDeferred::declare(FrameGraph& graph, const SurfaceTargets& targets, co
     for (const GraphImage& g : gbufferRefs_) pass.attach(g, Use::ColorReadWrite);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                         .storageBuffer(2, water.state, Use::VertexStorageRead)
                         .storageBuffer(9, tileTagsRef_, Use::FragmentStorageWrite);
     return [this, water, &depth, &set](PassContext& pc) {
@@ -102,6 +103,7 @@ void WaterDeferred::declare(FrameGraph& graph, const SurfaceTargets& targets, co
   graph.pass(passes::kWater, [this, targets, water, pool, in](PassBuilder& pass) {
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                         .sampledImage(1, in.sky, in.equirect, Use::ComputeSample)
                         .constantBuffer(3, *pool.uniforms)
                         .constantBuffer(4, *pool.objects)

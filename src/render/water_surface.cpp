@@ -89,6 +89,7 @@ void WaterSurface::declare(FrameGraph& graph, const SurfaceTargets& targets, con
     const gpu::Image* ambient = clearAmbient_ ? &pass.attach(targets.ambient, Use::ColorReadWrite) : nullptr;
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
+                        .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                         .sampledImage(1, in.sky, in.equirect, Use::FragmentSample)
                         .storageBuffer(2, draw_.state, Use::VertexStorageRead)
                         .constantBuffer(3, *pool.uniforms)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
+#include "shading/glass_caustic.hpp"
 #include "shading/objects_model.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/sky_irradiance.hpp"
@@ -24,7 +25,8 @@ bool boxesCastShadows(const scene::Scene& scene) {
 }
 
 bool castsShadows(const scene::Scene& scene) {
-  return spheresCastShadows(scene) || boxesCastShadows(scene) || (scene.render.shadows && hasPool(scene));
+  return spheresCastShadows(scene) || boxesCastShadows(scene) || glassCastsShadows(scene) ||
+         (scene.render.shadows && hasPool(scene));
 }
 
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
@@ -33,7 +35,7 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
   if (!castsShadows(scene)) return c;  // nothing casts: sunVisibility is 1
   uint32_t spheres = 0;
   for (const scene::Sphere& s : scene.spheres) {
-    // Glass lets the light through (its caustic is not drawn).
+    // Glass casts by its table (glassCasters).
     if (scene::isGlass(s) || spheres == TP_MAX_SPHERES) continue;
     c.spheres[spheres++] = glm::vec4(scene::sphereCenterAt(s, time), s.radius);
   }
@@ -44,6 +46,10 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
     c.boxCenter[boxes] = box.center;
     c.boxHalfSize[boxes++] = box.halfSize;
   }
+  uint32_t glass = 0;
+  for (const scene::Sphere* s : glassCasters(scene, time))
+    c.glassSpheres[glass++] = glm::vec4(scene::sphereCenterAt(*s, time), s->radius);
+  c.glass.x = float(glass);
   const bool pool = hasPool(scene);
   c.sun = glm::vec4(c.sun.x, float(spheres), float(boxes), pool ? 1.0f : 0.0f);
   if (pool) c.pool = glm::vec4(0.5f * scene.water.extent, scene.ground.height, scene.water.level, scene.water.ior);

@@ -7,7 +7,7 @@
 namespace tp::render {
 
 // Whether anything in the scene casts the sun's shadow (render.shadows on,
-// and an opaque sphere, a box or a pool): otherwise the surfaces' shaders
+// and an opaque sphere, a box, a glass sphere or a pool): otherwise the surfaces' shaders
 // are the variants without the shadows' code.
 bool castsShadows(const scene::Scene& scene);
 // Whether the scene's opaque spheres, and its boxes, cast the sun's shadow:
@@ -18,7 +18,8 @@ bool boxesCastShadows(const scene::Scene& scene);
 
 // What casts the sun's shadows at `time`: the scene's opaque spheres (the
 // first TP_MAX_SPHERES) where their paths put them, its boxes, its pool's
-// walls; nothing with render.shadows off.
+// walls, its glass spheres in the air (glassCasters); nothing with
+// render.shadows off.
 shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time);
 
 // The light a scene's frames are lit by, made once where its sky is: the

@@ -39,6 +39,12 @@ bool groundOutOfObjectShadows(const shader::ShadowCasters& casters, glm::vec3 to
   for (uint32_t i = 0; i < uint32_t(casters.sun.y); ++i) {
     if (!outOfReach(glm::vec3(casters.spheres[i]), casters.spheres[i].w)) return false;
   }
+  // A glass sphere's table reaches TP_GLASS_TABLE_REACH radii from its axis
+  // at any distance (sun_shadow.h's glassSunShare): as a sphere that large.
+  for (uint32_t i = 0; i < uint32_t(casters.glass.x); ++i) {
+    const glm::vec4 s = casters.glassSpheres[i];
+    if (!outOfReach(glm::vec3(s), float(TP_GLASS_TABLE_REACH) * s.w)) return false;
+  }
   for (uint32_t i = 0; i < uint32_t(casters.sun.z); ++i) {
     if (!outOfReach(glm::vec3(casters.boxCenter[i]), glm::length(glm::vec3(casters.boxHalfSize[i])))) return false;
   }

@@ -8,7 +8,8 @@
 
 namespace tp::render {
 
-// Whether no sphere's and no box's shadow, penumbra included, can fall on
+// Whether no sphere's and no box's shadow, penumbra included, nor a glass
+// sphere's table (its shadow and caustic), can fall on
 // the ground: the plane y = groundHeight outside the pool's square hole of
 // half side `hole` (0: no pool, the whole plane). `toSun`: unit, towards the
 // sun. Conservative: false when in doubt (a sun at the horizon).
