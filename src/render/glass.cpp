@@ -87,9 +87,7 @@ void Glass::declare(FrameGraph& graph, const SurfaceTargets& frame, const FrameI
              [this, in, &spheres](PassBuilder& pass) {
                const gpu::Image& backFaces = pass.attach(backFacesRef_, Use::ColorWrite);
                const gpu::Image& depth = pass.attach(depthRef_, Use::DepthWrite);
-               Bindings& set = pass.bindings()
-                                   .uniformBuffer(0, in.uniforms, Use::HostData)
-                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData);
+               Bindings& set = pass.bindings().uniformBuffer(0, in.uniforms, Use::HostData);
                return [this, &backFaces, &depth, &set, &spheres](PassContext& pc) {
                  const auto& cmd = pc.cmd;
                  auto target =

@@ -100,7 +100,6 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
                const gpu::Image& target = pass.attach(draw_.caustics, Use::ColorWrite);
                Bindings& set = pass.bindings()
                                    .uniformBuffer(0, in.uniforms, Use::HostData)
-                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                                    .storageBuffer(2, water.state, Use::VertexStorageRead)
                                    .constantBuffer(3, uniforms_);
                return [this, water, &target, &set](PassContext& pc) {

@@ -68,7 +68,6 @@ void WaterDeferred::declare(FrameGraph& graph, const SurfaceTargets& targets, co
     for (const GraphImage& g : gbufferRefs_) pass.attach(g, Use::ColorReadWrite);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
-                        .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
                         .storageBuffer(2, water.state, Use::VertexStorageRead)
                         .storageBuffer(9, tileTagsRef_, Use::FragmentStorageWrite);
     return [this, water, &depth, &set](PassContext& pc) {
