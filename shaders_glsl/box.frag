@@ -26,7 +26,7 @@ void main() {
   const vec3 reflectance = params.albedo.rgb / kPi;
   color = vec4(reflectance * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic) *
                        toCamera +
-                   viewInScatter(medium, worldPosition),
+                   viewInScatter(medium, pool.around, worldPosition),
                1.0);
   writeGbuffer(frame, n, reflectance * objectIrradiance(pool, frame, worldPosition, n, 0.0) * toCamera);
 }

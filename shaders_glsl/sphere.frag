@@ -30,7 +30,7 @@ void main() {
   const vec3 diffuse =
       params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
-                   viewInScatter(medium, worldPosition),
+                   viewInScatter(medium, pool.around, worldPosition),
                1.0);
   // AO scales the Lambertian part's light but the sun's.
   writeGbuffer(frame, n, glossyMix(params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, 0.0),

@@ -37,16 +37,59 @@ shader::FrameUniforms sunAt(float elevationDegrees, std::optional<scene::Sphere>
   return frame;
 }
 
+// A pool's light around (SH9 of the radiance arriving from each
+// direction), as the bake gives it under a high sun: a bright floor below,
+// Snell's window above, brighter towards +x. Positive everywhere.
+shader::Sh9 lightAround() {
+  shader::Sh9 sh{};
+  sh.c[0] = glm::vec4(0.90f, 1.60f, 1.70f, 0.0f);     // the mean
+  sh.c[1] = glm::vec4(-0.20f, -0.35f, -0.40f, 0.0f);  // y: brighter below
+  sh.c[3] = glm::vec4(0.10f, 0.15f, 0.12f, 0.0f);     // x
+  sh.c[5] = glm::vec4(0.04f, 0.05f, 0.06f, 0.0f);     // yz
+  sh.c[6] = glm::vec4(0.12f, 0.22f, 0.25f, 0.0f);     // 3y^2 - 1: bright up and down
+  sh.c[8] = glm::vec4(-0.05f, -0.06f, -0.04f, 0.0f);  // x^2 - z^2
+  return sh;
+}
+
+// The light around scattered towards -dir, per unit of sigma_s: Henyey and
+// Greenstein's phase function times the radiance the SH9 holds, integrated
+// over the sphere of directions by the midpoint rule (not by the bands'
+// factors the header uses), in polar angle about dir, where the phase
+// peaks, finely enough for g = 0.9; the radiance is a trigonometric
+// polynomial of degree 2 in the azimuth, which 16 points take exactly.
+glm::dvec3 aroundScattered(const shader::Sh9& sh, glm::vec3 dir, float g) {
+  constexpr int kPolar = 4000, kAzimuth = 16;
+  const glm::dvec3 w(dir);
+  const glm::dvec3 t =
+      glm::normalize(glm::cross(std::abs(w.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0), w));
+  const glm::dvec3 b = glm::cross(w, t);
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < kPolar; ++i) {
+    const double theta = (i + 0.5) * glm::pi<double>() / kPolar;
+    // Light from `from` travels along -from; scattered towards -dir: the
+    // angle between the two travels is theta.
+    const double phase = henyeyGreenstein(float(std::cos(theta)), g) * std::sin(theta);
+    for (int j = 0; j < kAzimuth; ++j) {
+      const double a = (j + 0.5) * 2.0 * glm::pi<double>() / kAzimuth;
+      const glm::vec3 from(std::cos(theta) * w + std::sin(theta) * (std::cos(a) * t + std::sin(a) * b));
+      glm::dvec3 radiance(0.0);
+      for (uint32_t k = 0; k < 9; ++k) radiance += glm::dvec3(glm::vec3(sh.c[k])) * double(shader::sh9Basis(k, from));
+      sum += radiance * phase;
+    }
+  }
+  return sum * (glm::pi<double>() / kPolar) * (2.0 * glm::pi<double>() / kAzimuth);
+}
+
 // The model's integrand at distance s along the path, written from the
-// model's words, not from the header's pieces: each beam's light at the
-// point, scattered towards the start, attenuated on the way back.
-glm::dvec3 integrand(const shader::FrameUniforms& frame, glm::vec3 start, glm::vec3 dir, double s) {
+// model's words, not from the header's pieces: the sun's beam at the point
+// and the light around (its scattered share `around`, from
+// aroundScattered), scattered towards the start, attenuated on the way back.
+glm::dvec3 integrand(const shader::FrameUniforms& frame, glm::dvec3 around, glm::vec3 start, glm::vec3 dir, double s) {
   const glm::vec3 at = start + float(s) * dir;
   const glm::dvec3 x = glm::dvec3(start) + s * glm::dvec3(dir);
   const double depth = kLevel - x.y;
   const glm::dvec3 ext(kExtinction), back = glm::exp(-ext * s);
-  const glm::dvec3 skyIrradiance(shader::skyIrradiance(frame.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)));
-  glm::dvec3 light = skyIrradiance * glm::exp(-ext * depth) / (4.0 * glm::pi<double>());
+  glm::dvec3 light = around;
   const glm::dvec3 toSun(frame.sunDirection);
   // Snell's law for the beam's angle from the vertical.
   const double sinWater = std::sqrt(1.0 - toSun.y * toSun.y) / kIor, mu = std::sqrt(1.0 - sinWater * sinWater);
@@ -63,8 +106,9 @@ glm::dvec3 integrand(const shader::FrameUniforms& frame, glm::vec3 start, glm::v
 glm::dvec3 quadrature(const shader::FrameUniforms& frame, glm::vec3 start, glm::vec3 dir, double length) {
   constexpr int kIntervals = 4000;
   const double h = length / kIntervals;
-  glm::dvec3 sum = integrand(frame, start, dir, 0.0) + integrand(frame, start, dir, length);
-  for (int i = 1; i < kIntervals; ++i) sum += (i % 2 ? 4.0 : 2.0) * integrand(frame, start, dir, i * h);
+  const glm::dvec3 around = aroundScattered(lightAround(), dir, kScattering.w);
+  glm::dvec3 sum = integrand(frame, around, start, dir, 0.0) + integrand(frame, around, start, dir, length);
+  for (int i = 1; i < kIntervals; ++i) sum += (i % 2 ? 4.0 : 2.0) * integrand(frame, around, start, dir, i * h);
   return sum * h / 3.0;
 }
 
@@ -85,6 +129,32 @@ TEST(WaterScattering, PhaseFunctionIsNormalisedWithMeanCosineG) {
     EXPECT_NEAR(total, 1.0, 1e-4) << "g " << g;
     EXPECT_NEAR(meanCosine, g, 1e-4) << "g " << g;
   }
+}
+
+// The light around scattered by the phase function: the header's bands
+// scaled by g^l against the integral over the sphere, for forward, even and
+// backward scattering, looking up, down, level and slanting. With g = 0 it
+// is the light's mean over the sphere.
+TEST(WaterScattering, LightAroundScatteredIsThePhaseOverTheSphere) {
+  const shader::Sh9 sh = lightAround();
+  double worst = 0.0;
+  for (const float g : {-0.5f, 0.0f, 0.3f, 0.7f, 0.9f}) {
+    for (const glm::vec3 dir : {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f),
+                                glm::normalize(glm::vec3(-0.6f, -0.3f, 0.8f))}) {
+      const glm::dvec3 expected = aroundScattered(sh, dir, g);
+      const glm::vec3 got = shader::poolLightScattered(sh, dir, g);
+      for (int c = 0; c < 3; ++c) {
+        const double relative = std::abs(got[c] - expected[c]) / expected[c];
+        worst = std::max(worst, relative);
+        EXPECT_LT(relative, 1e-4) << "g " << g << " channel " << c;
+      }
+      if (g == 0.0f) {
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(got[c], sh.c[0][c] / (2.0f * std::sqrt(glm::pi<float>())), 1e-6f) << "channel " << c;
+      }
+    }
+  }
+  std::printf("light around scattered against the sphere's quadrature: largest relative difference %.2e\n", worst);
 }
 
 // The closed form against Simpson's rule over the model's integrand, on
@@ -110,8 +180,8 @@ TEST(WaterScattering, ClosedFormMatchesQuadrature) {
       // One closed form (0 pieces), and the default's pieces, all lit here:
       // the same integral summed in float in parts.
       for (const uint32_t pieces : {0u, kPieces}) {
-        const glm::vec3 got =
-            waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, pieces, p.start, p.dir, p.length);
+        const glm::vec3 got = waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, pieces, lightAround(),
+                                             p.start, p.dir, p.length);
         for (int c = 0; c < 3; ++c) {
           const double relative = std::abs(got[c] - expected[c]) / expected[c];
           worst = std::max(worst, relative);
@@ -138,12 +208,15 @@ TEST(WaterScattering, ShadowedBeamConvergesToQuadratureOfTheShadowedIntegrand) {
   const glm::vec3 below = sphere.center + 0.6f * glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / kIor);
   const glm::vec3 start = below - 1.0f * across;
   const glm::dvec3 expected = quadrature(shadowed, start, across, 2.0);
-  const glm::vec3 unshadowed = waterInScatter(open, kExtinction, kScattering, kLevel, kIor, 0, start, across, 2.0f);
+  const glm::vec3 unshadowed =
+      waterInScatter(open, kExtinction, kScattering, kLevel, kIor, 0, lightAround(), start, across, 2.0f);
   // No pieces: the beam unshadowed in one closed form, the casters ignored.
-  const glm::vec3 whole = waterInScatter(shadowed, kExtinction, kScattering, kLevel, kIor, 0, start, across, 2.0f);
+  const glm::vec3 whole =
+      waterInScatter(shadowed, kExtinction, kScattering, kLevel, kIor, 0, lightAround(), start, across, 2.0f);
   std::map<uint32_t, double> errors;
   for (const uint32_t pieces : {2u, 4u, 8u, 16u, 32u}) {
-    const glm::vec3 got = waterInScatter(shadowed, kExtinction, kScattering, kLevel, kIor, pieces, start, across, 2.0f);
+    const glm::vec3 got =
+        waterInScatter(shadowed, kExtinction, kScattering, kLevel, kIor, pieces, lightAround(), start, across, 2.0f);
     for (int c = 0; c < 3; ++c) errors[pieces] = std::max(errors[pieces], std::abs(got[c] - expected[c]) / expected[c]);
     std::printf("%2u pieces: largest relative difference %.4f\n", pieces, errors[pieces]);
   }
@@ -160,30 +233,29 @@ TEST(WaterScattering, ShadowedBeamConvergesToQuadratureOfTheShadowedIntegrand) {
 }
 
 // Looking straight down from the surface into water without a floor, the
-// single-scattering radiance is sigma_s (p E / (sigma_t (1 + 1 / mu)) + the
-// sky's E / (4 pi) / (2 sigma_t)); level, at depth d, with the path running
-// for ever, it is sigma_s (p E exp(-sigma_t d / mu) + E_sky exp(-sigma_t d) /
-// (4 pi)) / sigma_t.
+// single-scattering radiance is sigma_s (p E / (sigma_t (1 + 1 / mu)) +
+// S / sigma_t), S the light around's scattered share (the same at every
+// depth); level, at depth d, with the path running for ever, it is sigma_s
+// (p E exp(-sigma_t d / mu) + S) / sigma_t.
 TEST(WaterScattering, SemiInfiniteSlabMatchesItsClosedForm) {
   const shader::FrameUniforms frame = sunAt(50.0f);
   const glm::vec3 toSun(frame.sunDirection);
   const double mu = std::sqrt(1.0 - (1.0 - toSun.y * toSun.y) / (kIor * kIor));
   const glm::dvec3 sun = glm::dvec3(frame.sunIrradiance) * double(toSun.y) / mu;
-  const glm::dvec3 sky(shader::skyIrradiance(frame.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)));
   const glm::dvec3 ext(kExtinction), sigma{glm::vec3(kScattering)};
-  const double iso = 1.0 / (4.0 * glm::pi<double>());
   // Down: the beam travels at mu below the horizon's normal; the path points down.
   const double downPhase = henyeyGreenstein(-float(mu), kScattering.w);
-  const glm::dvec3 down = sigma * (downPhase * sun / (ext * (1.0 + 1.0 / mu)) + iso * sky / (2.0 * ext));
-  const glm::vec3 gotDown = waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, kPieces, {0.0f, kLevel, 0.0f},
-                                           {0.0f, -1.0f, 0.0f}, 1e4f);
+  const glm::dvec3 aroundDown = aroundScattered(lightAround(), {0.0f, -1.0f, 0.0f}, kScattering.w);
+  const glm::dvec3 down = sigma * (downPhase * sun / (ext * (1.0 + 1.0 / mu)) + aroundDown / ext);
+  const glm::vec3 gotDown = waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, kPieces, lightAround(),
+                                           {0.0f, kLevel, 0.0f}, {0.0f, -1.0f, 0.0f}, 1e4f);
   // Level, looking towards the sun's side: the light scattered back travels
   // away from it, at sin(refracted angle) to the beam's cosine.
   const glm::vec3 towardsSun = glm::normalize(glm::vec3(toSun.x, 0.0f, toSun.z));
   const double depth = 0.8, levelPhase = henyeyGreenstein(float(std::sqrt(1.0 - mu * mu)), kScattering.w);
-  const glm::dvec3 level =
-      sigma * (levelPhase * sun * glm::exp(-ext * depth / mu) + iso * sky * glm::exp(-ext * depth)) / ext;
-  const glm::vec3 gotLevel = waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, kPieces,
+  const glm::dvec3 aroundLevel = aroundScattered(lightAround(), towardsSun, kScattering.w);
+  const glm::dvec3 level = sigma * (levelPhase * sun * glm::exp(-ext * depth / mu) + aroundLevel) / ext;
+  const glm::vec3 gotLevel = waterInScatter(frame, kExtinction, kScattering, kLevel, kIor, kPieces, lightAround(),
                                             {0.0f, kLevel - float(depth), 0.0f}, towardsSun, 1e4f);
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(gotDown[c], down[c], 1e-5 * down[c]) << "channel " << c;
@@ -198,12 +270,12 @@ TEST(WaterScattering, SemiInfiniteSlabMatchesItsClosedForm) {
 TEST(WaterScattering, NoScatteringAddsExactlyNothing) {
   const shader::FrameUniforms frame = sunAt(40.0f);
   const glm::vec3 light = waterInScatter(frame, kExtinction, glm::vec4(0.0f, 0.0f, 0.0f, 0.7f), kLevel, kIor, kPieces,
-                                         {0.0f, -0.5f, 0.0f}, {0.0f, -1.0f, 0.0f}, 2.0f);
+                                         lightAround(), {0.0f, -0.5f, 0.0f}, {0.0f, -1.0f, 0.0f}, 2.0f);
   EXPECT_EQ(light, glm::vec3(0.0f));
   EXPECT_FALSE(shader::waterScatters(glm::vec4(0.0f, 0.0f, 0.0f, 0.7f)));
   shader::CameraMedium medium{glm::vec4(kExtinction, 1.0f), glm::vec4(0.0f),
                               glm::vec4(kLevel, kIor, float(kPieces), 0.0f)};
-  EXPECT_EQ(shader::viewInScatter(frame, medium, glm::vec3(1.0f, -1.0f, 0.0f)), glm::vec3(0.0f));
+  EXPECT_EQ(shader::viewInScatter(frame, medium, lightAround(), glm::vec3(1.0f, -1.0f, 0.0f)), glm::vec3(0.0f));
 }
 
 }  // namespace tp::test

@@ -53,6 +53,16 @@ TP_INLINE vec3 poolFloorNormal(PoolParams pool, vec2 xz, float spacing) {
 // the surface, as flat water at that level passes the light.
 TP_INLINE bool underRestLevel(PoolParams pool, vec3 p) { return pool.water.w > 0.0f && p.y < pool.water.x; }
 
+// What the water takes from a beam of light on its way down to what it
+// lights: its absorption, and of its scattering the share that leaves the
+// beam's direction, 1 - g (the similarity relation: Henyey-Greenstein's
+// forward share g goes on with the beam). With the whole extinction the
+// floor in the sun under scattering water was darker than the path-traced
+// truth's (docs/light-in-the-water.md). 0 scattering: the absorption.
+TP_INLINE vec3 beamExtinction(PoolParams pool) {
+  return vec3(pool.extinction) - pool.scattering.w * vec3(pool.scattering);
+}
+
 // The sun's irradiance on normal n at p under flat water: its disc's light
 // refracted at the rest level, Fresnel's transmission taken, its solid angle
 // compressed by cos(air) / cos(water) (the radiance's n^2 and the solid
@@ -66,7 +76,7 @@ TP_INLINE vec3 sunThroughFlatWater(PoolParams pool, FrameUniforms frame, vec3 p,
   float depth = max(pool.water.x - p.y, 0.0f);
   float transmitted = 1.0f - fresnelDielectric(toSun.y, 1.0f, ior);
   return vec3(frame.sunIrradiance) * (transmitted * toSun.y / cosWater * max(dot(n, -travel), 0.0f)) *
-         exp(-vec3(pool.extinction) * (depth / cosWater));
+         exp(-beamExtinction(pool) * (depth / cosWater));
 }
 
 // The sun's and the sky's irradiance on an object (a sphere, a box) at p

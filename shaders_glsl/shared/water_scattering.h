@@ -1,6 +1,6 @@
 // Light scattered once in the water: what a path under the water gathers
-// from the sun's and the sky's light that the water scatters towards it, in
-// closed form. Compiled for the raster (the water's rays, and what the camera
+// from the sun's beam and the pool's light that the water scatters towards
+// it, in closed form. Compiled for the raster (the water's rays, and what the camera
 // sees from under the surface) and for C++, where tests hold it against an
 // independent quadrature and the semi-infinite slab's closed form. The
 // reference does not use it: it samples the same integral along its own rays,
@@ -15,16 +15,23 @@
 //     irradiance it has above the water (the beam narrows by cos(air) /
 //     cos(water)), attenuated by exp(-sigma_t d / mu) at depth d, mu the
 //     cosine of the refracted beam with the vertical; its phase is HG's;
-//   - the sky as a vertical beam of the sky's irradiance on a level surface,
-//     attenuated by exp(-sigma_t d), scattered evenly (phase 1 / 4 pi).
+//   - everything else, the sky through the surface and the light the floor,
+//     the walls and the surface's underside send back, as the pool's light
+//     around (PoolParams::around: the radiance at the pool's centre, half
+//     way down, from every direction, in SH9), the same at every point of
+//     the water; scattered by HG's phase, whose band l carries g^l (Funk and
+//     Hecke). The floor's light is as large as the sky's: a vertical beam
+//     of the sky alone left the water far less hazy than in the path-traced
+//     truth (docs/light-in-the-water.md).
 // The sun's beam is shadowed by what casts the sun's shadows
 // (shared/sun_shadow.h's sunRayOpen), taken at a few points of the path;
-// the sky's is not.
+// the pool's light is not.
 #ifndef TP_SHARED_WATER_SCATTERING_H
 #define TP_SHARED_WATER_SCATTERING_H
 #include "shared/constants.h"
 #include "shared/frame.h"
 #include "shared/interop.h"
+#include "shared/sh9.h"
 #include "shared/sun_shadow.h"
 #include "shared/water_surface.h"
 
@@ -82,20 +89,36 @@ TP_INLINE vec3 beamInScatter(vec3 extinction, vec3 scattering, vec3 beam, float 
   return scattering * phase * beam * exp(-extinction * (depth / mu)) * along;
 }
 
+// The radiance the water scatters towards -dir per unit of sigma_s from the
+// pool's light around (`around`, SH9 of the radiance arriving from each
+// direction): Henyey-Greenstein's phase of anisotropy g convolved with it,
+// band l scaled by g^l; clamped at 0, where the truncated series rings.
+TP_INLINE vec3 poolLightScattered(Sh9 around, vec3 dir, float g) {
+  vec3 light = vec3(0.0f);
+  for (uint i = 0u; i < 9u; ++i) {
+    uint band = sh9Band(i);
+    float factor = band == 0u ? 1.0f : (band == 1u ? g : g * g);
+    light += factor * sh9Basis(i, dir) * vec3(around.c[i]);
+  }
+  return max(light, vec3(0.0f));
+}
+
 // Radiance arriving at `start`, under the water, along -dir from the water
-// on the segment start + s dir, 0 < s < length: the sun's and the sky's
-// light scattered once towards it (the model above). `scattering`: rgb
-// sigma_s, w g; `level`: the rest level; `ior`: the water's index.
+// on the segment start + s dir, 0 < s < length: the sun's beam and the
+// pool's light around (`around`) scattered once towards it (the model
+// above). `scattering`: rgb sigma_s, w g; `level`: the rest level; `ior`:
+// the water's index.
 // `pieces` (water.scattering_shadow_pieces): the sun's beam is cut into this
 // many equal pieces of the path, each lit or not as the sun's central ray
 // from its middle is open: the shafts of light and shadow the spheres, the
 // boxes and the walls make in it; within a piece the closed form holds. 0:
 // the beam unshadowed, one closed form.
 TP_INLINE vec3 waterInScatter(TP_FRAME_PARAM vec3 extinction, vec4 scattering, float level, float ior, uint pieces,
-                              vec3 start, vec3 dir, float length) {
+                              Sh9 around, vec3 start, vec3 dir, float length) {
   float depth = level - start.y;
-  vec3 light = beamInScatter(extinction, vec3(scattering), skyIrradiance(frame.skyIrradiance, vec3(0.0f, 1.0f, 0.0f)),
-                             1.0f / (4.0f * kPi), 1.0f, depth, dir.y, length);
+  vec3 light = vec3(scattering) * poolLightScattered(around, dir, scattering.w) *
+               vec3(attenuatedLength(extinction.x, length), attenuatedLength(extinction.y, length),
+                    attenuatedLength(extinction.z, length));
   vec3 toSun = TP_SCATTER_TO_SUN;
   if (toSun.y <= 0.0f) return light;
   vec3 travel = refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / ior);
@@ -121,18 +144,18 @@ TP_INLINE bool waterScatters(vec4 scattering) { return scattering.x + scattering
 // the camera is under the surface (0 in air); added to what it sees of p,
 // attenuated by viewTransmittance.
 #if defined(__cplusplus) || defined(TP_SCATTERING)
-TP_INLINE vec3 viewInScatter(TP_FRAME_PARAM CameraMedium medium, vec3 p) {
+TP_INLINE vec3 viewInScatter(TP_FRAME_PARAM CameraMedium medium, Sh9 around, vec3 p) {
   vec3 light = vec3(0.0f);
   vec3 camera = vec3(frame.cameraPosition);
   float length = distance(camera, p);
   if (waterScatters(TP_SCATTER_UNFOLDED(medium.scattering)) && length > 0.0f) {
     light = waterInScatter(TP_FRAME_ARG vec3(medium.extinction), medium.scattering, medium.water.x, medium.water.y,
-                           uint(TP_SCATTER_UNFOLDED(medium.water.z)), camera, (p - camera) / length, length);
+                           uint(TP_SCATTER_UNFOLDED(medium.water.z)), around, camera, (p - camera) / length, length);
   }
   return light;
 }
 #else
-vec3 viewInScatter(CameraMedium medium, vec3 p) { return vec3(0.0); }
+vec3 viewInScatter(CameraMedium medium, Sh9 around, vec3 p) { return vec3(0.0); }
 #endif
 
 TP_END

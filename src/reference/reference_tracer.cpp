@@ -299,11 +299,12 @@ class Tracer {
   }
 
   // What the water on origin + s dir, 0 < s < length, scatters towards
-  // origin: shared/water_scattering.h's model (the sun's and the sky's beams
-  // entering through the flat surface at the rest level), sampled at one
-  // point per path, not integrated in closed form, the sun's beam there
-  // passing a shadow ray (sunShare). The point is drawn with a density
-  // proportional to the mean extinction's attenuation along the segment.
+  // origin: shared/water_scattering.h's model (the sun's beam entering
+  // through the flat surface at the rest level, the pool's light around),
+  // sampled at one point per path, not integrated in closed form, the sun's
+  // beam there passing a shadow ray (sunShare). The point is drawn with a
+  // density proportional to the mean extinction's attenuation along the
+  // segment.
   glm::vec3 inScatter(glm::vec3 origin, glm::vec3 dir, float length, PathSample path) const {
     if (!shader::waterScatters(glm::vec4(scattering_, 0.0f)) || !std::isfinite(length)) return glm::vec3(0.0f);
     const float mean = (extinction_.x + extinction_.y + extinction_.z) / 3.0f;  // > 0: it scatters
@@ -312,8 +313,7 @@ class Tracer {
     const float density = mean * std::exp(-mean * s) / reach;
     const glm::vec3 x = origin + s * dir;
     const float depth = level_ - x.y;
-    glm::vec3 light = shader::skyIrradiance(uniforms_.skyIrradiance, glm::vec3(0.0f, 1.0f, 0.0f)) *
-                      glm::exp(-extinction_ * depth) / (4.0f * glm::pi<float>());
+    glm::vec3 light = shader::poolLightScattered(pool_.around, dir, anisotropy_);
     const glm::vec3 toSun(uniforms_.sunDirection);
     if (toSun.y > 0.0f) {
       const glm::vec3 travel = glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
