@@ -16,6 +16,8 @@ layout(binding = 1) uniform Medium { CameraMedium medium; };
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
 layout(binding = 5) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
+layout(binding = 6) readonly buffer FloorVertices { vec4 floorVertices[]; };  // and the pool's baked light
+#include "shared/pool_light.h"
 #include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(push_constant) uniform Push { BoxParams params; };
 
@@ -26,7 +28,7 @@ void main() {
   const vec3 reflectance = params.albedo.rgb / kPi;
   color = vec4(reflectance * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic) *
                        toCamera +
-                   viewInScatter(medium, pool.around, worldPosition),
+                   viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   writeGbuffer(frame, n, reflectance * objectIrradiance(pool, frame, worldPosition, n, 0.0) * toCamera);
 }

@@ -27,7 +27,7 @@ void main() {
   const vec3 toCamera = viewTransmittance(medium, frame.cameraPosition.xyz, worldPosition);
   const vec3 albedo = groundAlbedo(pool.tiles, worldPosition.xz, footprint);
   color = vec4(albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, caustic) * toCamera +
-                   viewInScatter(medium, pool.around, worldPosition),
+                   viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   writeGbuffer(frame, n, albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, 0.0) * toCamera);
 }

@@ -32,7 +32,7 @@ void main() {
   const vec3 albedo = poolWallAlbedo(pool, poolWallCoordinates(pool, worldPosition, n), footprint);
   const vec3 diffuse = albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
-                   viewInScatter(medium, pool.around, worldPosition),
+                   viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   // AO scales the Lambertian part's light but the sun's.
   writeGbuffer(frame, n, glossyMix(albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, 0.0), vec3(0.0),

@@ -19,6 +19,8 @@ layout(binding = 2) uniform sampler2D glossyMap;
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
 layout(binding = 5) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
+layout(binding = 6) readonly buffer FloorVertices { vec4 floorVertices[]; };  // and the pool's baked light
+#include "shared/pool_light.h"
 #include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(push_constant) uniform Push { SphereParams params; };
 
@@ -30,7 +32,7 @@ void main() {
   const vec3 diffuse =
       params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
   color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
-                   viewInScatter(medium, pool.around, worldPosition),
+                   viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   // AO scales the Lambertian part's light but the sun's.
   writeGbuffer(frame, n, glossyMix(params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, 0.0),

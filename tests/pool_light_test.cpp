@@ -129,7 +129,7 @@ TEST(PoolLight, TheSunsBouncesAreTheFloorsLightSentBack) {
   }
 }
 
-// The light around an object under the water (PoolLight::around), black
+// The light around at each point of its grid (shared/pool_light.h), black
 // surfaces and clear water under a uniform sky of radiance 1: from below,
 // the sky fills Snell's window at n^2 times Fresnel's transmission, and
 // nothing else is lit (outside the window the underside reflects the black
@@ -151,10 +151,46 @@ TEST(PoolLight, TheLightAroundIsSnellsWindowInSh9) {
     for (uint32_t i : {0u, 1u, 6u})
       expected[i] += 2.0 * glm::pi<double>() * radiance * double(shader::sh9Basis(i, d)) / steps;
   }
-  for (uint32_t i = 0; i < 9; ++i) {
-    std::printf("coefficient %u: baked %.5f, quadrature %.5f\n", i, light.around.c[i].y, expected[i]);
-    EXPECT_NEAR(light.around.c[i].y, expected[i], 0.005 * expected[0]) << i;
+  // In a pool 100 m wide no point's window reaches a wall.
+  const size_t first = model.floorVertices.size() + TP_POOL_LIGHT_TEXELS;
+  for (uint32_t k = 0; k < TP_POOL_AROUND_POINTS; ++k) {
+    for (uint32_t i = 0; i < 9; ++i) {
+      const float baked = light.floorAndLight.at(first + 9 * k + i).y;
+      if (k == 0) std::printf("coefficient %u: baked %.5f, quadrature %.5f\n", i, baked, expected[i]);
+      EXPECT_NEAR(baked, expected[i], 0.005 * expected[0]) << "point " << k << " coefficient " << i;
+    }
   }
+  // The lookup between the points gives the same.
+  const shader::Sh9 between =
+      shader::poolLightAround(model.params, glm::vec3(3.0f, -0.5f, -7.0f), light.floorAndLight.data());
+  for (uint32_t i = 0; i < 9; ++i) EXPECT_NEAR(between.c[i].y, expected[i], 0.005 * expected[0]) << i;
+}
+
+// The lookup of the light around between its grid's points: a light that
+// is a linear function of where it is comes back exactly between the
+// points, and is held at the outer ones beyond them.
+TEST(PoolLight, TheLightAroundIsTrilinearBetweenItsPoints) {
+  const scene::Scene s = widePool(0.0f, 0.0f);
+  const render::PoolModel model = render::poolModel(s);
+  std::vector<glm::vec4> buffer = model.floorVertices;
+  const size_t first = buffer.size() + TP_POOL_LIGHT_TEXELS;
+  buffer.resize(buffer.size() + TP_POOL_LIGHT_SIZE, glm::vec4(0.0f));
+  auto linear = [](glm::vec3 p, uint32_t i) { return 1.0f + 0.01f * p.x - 0.3f * p.y + 0.02f * p.z + float(i); };
+  for (int k = 0; k < TP_POOL_AROUND_POINTS; ++k) {
+    const glm::vec3 p = shader::poolAroundPoint(model.params, k);
+    for (uint32_t i = 0; i < 9; ++i) buffer[first + 9 * size_t(k) + i] = glm::vec4(linear(p, i));
+  }
+  const glm::vec3 lowest = shader::poolAroundPoint(model.params, 0);
+  const glm::vec3 highest = shader::poolAroundPoint(model.params, TP_POOL_AROUND_POINTS - 1);
+  for (const glm::vec3 p : {glm::vec3(3.0f, -0.5f, -7.0f), glm::vec3(-20.0f, -0.9f, 11.0f), lowest, highest}) {
+    const shader::Sh9 sh = shader::poolLightAround(model.params, p, buffer.data());
+    for (uint32_t i = 0; i < 9; ++i) EXPECT_NEAR(sh.c[i].x, linear(p, i), 1e-4f) << p.x << " " << p.y << " " << i;
+  }
+  // Past the outer points, in the corner of the pool and at the surface.
+  const glm::vec3 corner(-49.0f, s.water.level, 49.0f);
+  const glm::vec3 held(lowest.x, lowest.y, highest.z);
+  const shader::Sh9 sh = shader::poolLightAround(model.params, corner, buffer.data());
+  for (uint32_t i = 0; i < 9; ++i) EXPECT_NEAR(sh.c[i].x, linear(held, i), 1e-4f) << i;
 }
 
 }  // namespace tp::test

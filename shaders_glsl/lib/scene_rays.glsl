@@ -58,7 +58,7 @@ vec3 skyFiltered(vec3 direction, RayDifferential rd) {
 #ifdef TP_SCATTERING
 vec3 inScatter(vec3 start, vec3 dir, float length) {
   return waterInScatter(pool.extinction.rgb, pool.scattering, pool.water.x, pool.water.y, uint(pool.extinction.w),
-                        pool.around, start, dir, length);
+                        poolLightAround(pool, start + (0.5 * length) * dir), start, dir, length);
 }
 #else
 vec3 inScatter(vec3 start, vec3 dir, float length) { return vec3(0.0); }

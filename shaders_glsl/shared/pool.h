@@ -7,7 +7,6 @@
 #include "shared/ground.h"
 #include "shared/interop.h"
 #include "shared/noise.h"
-#include "shared/sh9.h"
 #include "shared/specialization.h"
 #include "shared/surface_pattern.h"
 
@@ -29,10 +28,6 @@ struct PoolParams {
   vec4 extinction;      // rgb: absorption plus scattering, 1/m; w: the scattered sun's shadow pieces
   vec4 scattering;      // rgb: 1/m; w: the phase's anisotropy (water_scattering.h)
   GroundParams ground;  // the ground around the pool, for rays cast in shaders (the glass's)
-  // The light around an object under the water: the radiance at the pool's
-  // centre, half way down, from every direction, in SH9 (baked with the
-  // floor's and walls' light: shading/pool_light.hpp). Zero until baked.
-  Sh9 around;
 };
 
 // Bricks' tones vary by up to this fraction, one tone per brick, so that
@@ -121,7 +116,7 @@ TP_INLINE float poolWallBandTop(PoolParams p, uint band) {
 TP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::PoolParams) == 544);
+static_assert(sizeof(tp::shader::PoolParams) == 400);
 #endif
 
 #endif

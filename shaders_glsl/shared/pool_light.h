@@ -14,9 +14,21 @@
 // TP_POOL_LIGHT_ALONG by TP_POOL_LIGHT_DOWN texels from the rest level down
 // to the floor's lowest vertex, walls in poolLightWall's order. Read
 // bilinearly between texel centres, clamped at the edges.
+//
+// Then the light around: the radiance arriving from every direction, in
+// SH9 (9 vec4s a point, rgb), at the centres of a grid of cells over the
+// pool's water, TP_POOL_AROUND_SIDE a side across its square and
+// TP_POOL_AROUND_LAYERS from the rest level down to the floor's lowest
+// vertex; x fastest, then z, then down. It lights the objects under the
+// water and is what the water scatters (shared/water_scattering.h). Read
+// trilinearly between the points, held at the outer ones. One point at the
+// pool's centre held it before; in scenes/underwater.json the light's mean
+// by the floor is a third less in a corner than in the middle
+// (docs/pool-light.md).
 #ifndef TP_SHARED_POOL_LIGHT_H
 #define TP_SHARED_POOL_LIGHT_H
 #include "shared/pool_trace.h"
+#include "shared/sh9.h"
 #include "shared/shading.h"
 
 #define TP_POOL_LIGHT_FLOOR 16
@@ -24,6 +36,11 @@
 #define TP_POOL_LIGHT_DOWN 8
 #define TP_POOL_LIGHT_TEXELS \
   (TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR + 4 * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN)
+#define TP_POOL_AROUND_SIDE 4
+#define TP_POOL_AROUND_LAYERS 3
+#define TP_POOL_AROUND_POINTS (TP_POOL_AROUND_SIDE * TP_POOL_AROUND_SIDE * TP_POOL_AROUND_LAYERS)
+// The vec4s after the floor's vertices: the texels, then the light around.
+#define TP_POOL_LIGHT_SIZE (TP_POOL_LIGHT_TEXELS + 9 * TP_POOL_AROUND_POINTS)
 
 TP_BEGIN
 
@@ -71,6 +88,52 @@ TP_INLINE vec3 poolLightAt(PoolParams pool, vec3 p, vec3 n TP_FLOOR_VERTICES_PAR
   int first = TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR + wall * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN;
   return poolLightGrid(pool, first, TP_POOL_LIGHT_ALONG, TP_POOL_LIGHT_DOWN, poolLightWallUv(pool, p, wall)
                        TP_FLOOR_VERTICES_ARG);
+}
+
+// Where point k of the light around's grid is.
+TP_INLINE vec3 poolAroundPoint(PoolParams pool, int k) {
+  int i = k % TP_POOL_AROUND_SIDE, j = (k / TP_POOL_AROUND_SIDE) % TP_POOL_AROUND_SIDE;
+  int l = k / (TP_POOL_AROUND_SIDE * TP_POOL_AROUND_SIDE);
+  float cell = 2.0f * pool.box.x / float(TP_POOL_AROUND_SIDE);
+  float layer = (pool.water.x - pool.terrain.z) / float(TP_POOL_AROUND_LAYERS);
+  return vec3(-pool.box.x + (float(i) + 0.5f) * cell, pool.water.x - (float(l) + 0.5f) * layer,
+              -pool.box.x + (float(j) + 0.5f) * cell);
+}
+
+// The light around p (SH9 of the radiance arriving at it), trilinear
+// between the grid's points, held at the outer ones.
+TP_INLINE Sh9 poolLightAround(PoolParams pool, vec3 p TP_FLOOR_VERTICES_PARAM) {
+  const int side = TP_POOL_AROUND_SIDE, layers = TP_POOL_AROUND_LAYERS;
+  vec3 g = vec3((p.x + pool.box.x) / (2.0f * pool.box.x) * float(side),
+                (pool.water.x - p.y) / (pool.water.x - pool.terrain.z) * float(layers),
+                (p.z + pool.box.x) / (2.0f * pool.box.x) * float(side)) -
+           0.5f;
+  g = clamp(g, vec3(0.0f), vec3(float(side - 1), float(layers - 1), float(side - 1)));
+  int i = min(int(floor(g.x)), side - 2), l = min(int(floor(g.y)), layers - 2), j = min(int(floor(g.z)), side - 2);
+  vec3 f = g - vec3(float(i), float(l), float(j));
+  int first = int(pool.noise.z * pool.noise.z) + TP_POOL_LIGHT_TEXELS;
+  Sh9 sh;
+  for (int m = 0; m < 9; ++m) sh.c[m] = vec4(0.0f);
+  for (int corner = 0; corner < 8; ++corner) {
+    int dx = corner & 1, dy = (corner >> 1) & 1, dz = corner >> 2;
+    float w = (dx == 1 ? f.x : 1.0f - f.x) * (dy == 1 ? f.y : 1.0f - f.y) * (dz == 1 ? f.z : 1.0f - f.z);
+    int k = first + 9 * (((l + dy) * side + j + dz) * side + i + dx);
+    for (int m = 0; m < 9; ++m) sh.c[m] += w * floorVertices[k + m];
+  }
+  return sh;
+}
+
+// The sun's and the sky's irradiance on an object (a sphere, a box) at p
+// with normal n, `sunShare` of the sun's. In the pool under the water's
+// rest level: the sun through the flat surface, and the pool's light around
+// it; elsewhere the sun and the open sky (SH9, the ground's light below the
+// horizon).
+TP_INLINE vec3 objectIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n,
+                                float sunShare TP_FLOOR_VERTICES_PARAM) {
+  if (underRestLevel(pool, p) && max(abs(p.x), abs(p.z)) < pool.box.x)
+    return sunShare * sunThroughFlatWater(pool, frame, p, n) +
+           sh9Irradiance(poolLightAround(pool, p TP_FLOOR_VERTICES_ARG), n);
+  return openAirIrradiance(frame, n, sunShare);
 }
 
 // The sun's and the sky's irradiance on a surface of the pool at p with

@@ -79,17 +79,6 @@ TP_INLINE vec3 sunThroughFlatWater(PoolParams pool, FrameUniforms frame, vec3 p,
          exp(-beamExtinction(pool) * (depth / cosWater));
 }
 
-// The sun's and the sky's irradiance on an object (a sphere, a box) at p
-// with normal n, `sunShare` of the sun's. In the pool under the water's
-// rest level: the sun through the flat surface, and the pool's light around
-// it (PoolParams::around); elsewhere the sun and the open sky (SH9, the
-// ground's light below the horizon).
-TP_INLINE vec3 objectIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n, float sunShare) {
-  if (underRestLevel(pool, p) && max(abs(p.x), abs(p.z)) < pool.box.x)
-    return sunShare * sunThroughFlatWater(pool, frame, p, n) + sh9Irradiance(pool.around, n);
-  return openAirIrradiance(frame, n, sunShare);
-}
-
 // The direction the caustics texture's light lines run in: the sun's,
 // refracted by flat water (downwards).
 TP_INLINE vec3 causticsLight(PoolParams pool, vec3 toSun) {

@@ -17,10 +17,10 @@
 //     cosine of the refracted beam with the vertical; its phase is HG's;
 //   - everything else, the sky through the surface and the light the floor,
 //     the walls and the surface's underside send back, as the pool's light
-//     around (PoolParams::around: the radiance at the pool's centre, half
-//     way down, from every direction, in SH9), the same at every point of
-//     the water; scattered by HG's phase, whose band l carries g^l (Funk and
-//     Hecke). The floor's light is as large as the sky's: a vertical beam
+//     around (the radiance arriving from every direction, in SH9: the
+//     caller's, shared/pool_light.h's at the path's middle), the same all
+//     along the path; scattered by HG's phase, whose band l carries g^l
+//     (Funk and Hecke). The floor's light is as large as the sky's: a vertical beam
 //     of the sky alone left the water far less hazy than in the path-traced
 //     truth (docs/light-in-the-water.md).
 // The sun's beam is shadowed by what casts the sun's shadows

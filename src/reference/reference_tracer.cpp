@@ -122,7 +122,6 @@ class Tracer {
           [&](glm::vec3 d) { return skyImage_ ? skyImageRadiance(*skyImage_, d) : shader::skyRadiance(sky_, d, 0.0f); },
           PoolLightSun{glm::vec3(uniforms.sunDirection), glm::vec3(uniforms.sunIrradiance)});
       floorVertices_ = std::move(light.floorAndLight);
-      pool_.around = light.around;
       poolHalf_ = 0.5f * scene.water.extent;
       level_ = scene.water.level;
     }
@@ -221,9 +220,10 @@ class Tracer {
       const scene::Sphere& sphere = spheres_[size_t(hit.sphere)];
       const glm::vec3 n = glm::normalize(p - sphere.center);
       if (first) *first = {p, n};
-      return glossy(sphere.albedo / glm::pi<float>() *
-                        shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p)),
-                    dir, n, glm::vec2(sphere.specular, sphere.roughness));
+      return glossy(
+          sphere.albedo / glm::pi<float>() *
+              shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p), floorVertices_.data()),
+          dir, n, glm::vec2(sphere.specular, sphere.roughness));
     }
     const glm::vec2 xz(p.x, p.z);
     switch (materials_[size_t(hit.mesh)]) {
@@ -249,7 +249,7 @@ class Tracer {
         const glm::vec3 n = glm::dot(hit.geometricNormal, dir) > 0.0f ? -hit.geometricNormal : hit.geometricNormal;
         if (first) *first = {p, n};
         return albedo_[size_t(hit.mesh)] / glm::pi<float>() *
-               shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p));
+               shader::objectIrradiance(pool_, uniforms_, p, n, surfaceSun(p, path) * focus(p), floorVertices_.data());
       }
       case Material::Water:
         return water(p, dir, hit, specular, path, first);
@@ -300,11 +300,11 @@ class Tracer {
 
   // What the water on origin + s dir, 0 < s < length, scatters towards
   // origin: shared/water_scattering.h's model (the sun's beam entering
-  // through the flat surface at the rest level, the pool's light around),
-  // sampled at one point per path, not integrated in closed form, the sun's
-  // beam there passing a shadow ray (sunShare). The point is drawn with a
-  // density proportional to the mean extinction's attenuation along the
-  // segment.
+  // through the flat surface at the rest level, the pool's light around at
+  // the segment's middle), sampled at one point per path, not integrated in
+  // closed form, the sun's beam there passing a shadow ray (sunShare). The
+  // point is drawn with a density proportional to the mean extinction's
+  // attenuation along the segment.
   glm::vec3 inScatter(glm::vec3 origin, glm::vec3 dir, float length, PathSample path) const {
     if (!shader::waterScatters(glm::vec4(scattering_, 0.0f)) || !std::isfinite(length)) return glm::vec3(0.0f);
     const float mean = (extinction_.x + extinction_.y + extinction_.z) / 3.0f;  // > 0: it scatters
@@ -313,7 +313,10 @@ class Tracer {
     const float density = mean * std::exp(-mean * s) / reach;
     const glm::vec3 x = origin + s * dir;
     const float depth = level_ - x.y;
-    glm::vec3 light = shader::poolLightScattered(pool_.around, dir, anisotropy_);
+    // The light around at the segment's middle, as the raster takes it.
+    const glm::vec3 middle = origin + (0.5f * length) * dir;
+    glm::vec3 light =
+        shader::poolLightScattered(shader::poolLightAround(pool_, middle, floorVertices_.data()), dir, anisotropy_);
     const glm::vec3 toSun(uniforms_.sunDirection);
     if (toSun.y > 0.0f) {
       const glm::vec3 travel = glm::refract(-toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);

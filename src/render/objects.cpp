@@ -13,6 +13,7 @@ Objects::Objects(const gpu::Context& ctx, FragmentNeeds needs, const PoolDraw& p
       boxes_(
           gpu::createGraphicsPipeline(ctx, opaquePipeline("box.vert", "box.frag", sizeof(shader::BoxParams), needs))),
       poolUniforms_(pool.uniforms),
+      floorVertices_(pool.floorVertices),
       caustics_(pool.caustics),
       waterCells_(pool.waterCells) {}
 
@@ -28,7 +29,8 @@ void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const Fr
                                    .sampledImage(2, in.glossy, in.equirect, Use::FragmentSample)
                                    .constantBuffer(3, *poolUniforms_)
                                    .sampledImage(4, caustics_, in.clamp, Use::FragmentSample)
-                                   .storageBuffer(5, waterCells_, Use::FragmentStorageRead);
+                                   .storageBuffer(5, waterCells_, Use::FragmentStorageRead)
+                                   .constantStorageBuffer(6, *floorVertices_);
                return [this, targets, &set, &inView](PassContext& pc) {
                  drawSurfaces(pc.cmd, targets, false,
                               [&] { drawObjects(pc.cmd, pc.descriptors, spheres_, boxes_, set, inView); });

@@ -28,6 +28,7 @@ class Objects {
  private:
   gpu::Pipeline spheres_, boxes_;
   const gpu::Buffer* poolUniforms_;
+  const gpu::Buffer* floorVertices_;  // and the pool's baked light (shared/pool_light.h)
   GraphImage caustics_;
   SwappingBuffer waterCells_;
 };

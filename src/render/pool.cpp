@@ -65,8 +65,7 @@ Pool::Pool(const gpu::Context& ctx, FrameGraph& graph, const scene::Scene& scene
   }
   const PoolModel model = poolModel(scene);
   const PoolLight light = bakedLight(scene, model, sky);
-  shader::PoolParams pool = model.params;
-  pool.around = light.around;
+  const shader::PoolParams pool = model.params;
   params_ = pool;
   floorTop_ = pool.terrain.w;
   uniforms_ = gpu::createFilledBuffer(ctx, &pool, sizeof(pool), vk::BufferUsageFlagBits::eUniformBuffer,

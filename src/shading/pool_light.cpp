@@ -227,13 +227,11 @@ class PoolLightBake {
 // Directions over the sphere for the light around: a Fibonacci lattice.
 constexpr uint32_t kAroundDirections = 4096;
 
-// The light around (PoolLight::around), from the bake whose texels
-// `floorAndLight` holds after the floor's vertices.
-shader::Sh9 lightAround(const PoolLightBake& bake, const shader::PoolParams& pool,
-                        const std::vector<glm::vec4>& floorAndLight) {
+// The light around at `centre` (shared/pool_light.h's grid), from the bake
+// whose texels `floorAndLight` holds after the floor's vertices.
+shader::Sh9 lightAroundAt(const PoolLightBake& bake, const shader::PoolParams& pool,
+                          const std::vector<glm::vec4>& floorAndLight, glm::vec3 centre) {
   const glm::vec4* data = floorAndLight.data();
-  const float level = pool.water.x;
-  const glm::vec3 centre(0.0f, level - 0.5f * (level - (pool.box.y - pool.box.z)), 0.0f);
   glm::dvec3 sum[9] = {};
   for (uint32_t i = 0; i < kAroundDirections; ++i) {
     const float y = 1.0f - 2.0f * (float(i) + 0.5f) / kAroundDirections;
@@ -263,6 +261,19 @@ shader::Sh9 lightAround(const PoolLightBake& bake, const shader::PoolParams& poo
   return sh;
 }
 
+// work(k) for k in [0, count), on every core.
+template <typename Work>
+void inParallel(uint32_t count, const Work& work) {
+  std::atomic<uint32_t> next{0};
+  auto run = [&] {
+    for (uint32_t k = next++; k < count; k = next++) work(k);
+  };
+  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  for (std::thread& t : threads) t = std::thread(run);
+  run();
+  for (std::thread& t : threads) t.join();
+}
+
 }  // namespace
 
 PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
@@ -270,19 +281,17 @@ PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> f
   PoolLight light;
   light.floorAndLight = std::move(floorVertices);
   const size_t first = light.floorAndLight.size();
-  // The texels' room made first: the bake reads the floor from this buffer.
-  light.floorAndLight.resize(first + TP_POOL_LIGHT_TEXELS);
+  // The light's room made first: the bake reads the floor from this buffer.
+  light.floorAndLight.resize(first + TP_POOL_LIGHT_SIZE);
   glm::vec4* texels = light.floorAndLight.data() + first;
   const PoolLightBake bake(pool, light.floorAndLight, sky, sun);
-  std::atomic<uint32_t> next{0};
-  auto work = [&] {
-    for (uint32_t k = next++; k < TP_POOL_LIGHT_TEXELS; k = next++) texels[k] = glm::vec4(bake.texel(k), 0.0f);
-  };
-  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
-  for (std::thread& t : threads) t = std::thread(work);
-  work();
-  for (std::thread& t : threads) t.join();
-  light.around = lightAround(bake, pool, light.floorAndLight);
+  inParallel(TP_POOL_LIGHT_TEXELS, [&](uint32_t k) { texels[k] = glm::vec4(bake.texel(k), 0.0f); });
+  // The light around reads the texels: after them.
+  glm::vec4* around = texels + TP_POOL_LIGHT_TEXELS;
+  inParallel(TP_POOL_AROUND_POINTS, [&](uint32_t k) {
+    const shader::Sh9 sh = lightAroundAt(bake, pool, light.floorAndLight, shader::poolAroundPoint(pool, int(k)));
+    for (uint32_t m = 0; m < 9; ++m) around[9 * k + m] = sh.c[m];
+  });
   return light;
 }
 

@@ -23,16 +23,14 @@ struct PoolLight {
   // stands (flat water at its rest level, the walls, the floor's mesh, no
   // objects): the first direction from a fixed cosine-weighted set, the
   // surface's Fresnel split followed both ways, the sun drawn at every
-  // later bounce. Deterministic: the raster and the model tracer bake the
-  // same numbers.
+  // later bounce. Then the light around at each of TP_POOL_AROUND_POINTS
+  // points in the water, 9 SH9 coefficients each: the radiance reaching
+  // the point from every direction, each direction's ray meeting the sky
+  // through the surface, or the floor or a wall, whose light is the baked
+  // one and the sun's through the flat surface where it reaches, absorbed
+  // on the way; reflected off the surface's underside once on.
+  // Deterministic: the raster and the model tracer bake the same numbers.
   std::vector<glm::vec4> floorAndLight;
-  // The light around an object under the water (PoolParams::around): the
-  // radiance reaching the pool's centre, half way down, from every
-  // direction, in SH9. Each direction's ray meets the sky through the
-  // surface, or the floor or a wall, whose light is the baked one and the
-  // sun's through the flat surface where it reaches, absorbed on the way;
-  // reflected off the surface's underside once on.
-  shader::Sh9 around{};
 };
 
 // The texels and the light around, for the pool's parameters and floor
