@@ -111,7 +111,7 @@ void main() {
   const vec3 leaving = entry.leaving, exitPoint = entry.exitPoint, reflected = entry.reflected;
   GlassRay rays[kGlassRays];
   rays[0] =
-      GlassRay(exitPoint, leaving, vec3(1.0 - reflectance), inPoolWater(exitPoint), self, footprints.leaving);
+      GlassRay(exitPoint, leaving, vec3(glassLeavingWeight(entry)), inPoolWater(exitPoint), self, footprints.leaving);
   rays[1] =
       GlassRay(worldPosition, reflected, vec3(reflectance), inPoolWater(worldPosition), self, footprints.reflected);
   int count = 2;
@@ -147,13 +147,13 @@ void main() {
       // Other glass: its two exact paths.
       const GlassExit g = glassObjectExit(object, met, ray.dir, ray.water);
       if (!room) {
-        radiance += weight * mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+        radiance += weight * (glassLeavingWeight(g) * sky(g.leaving) + g.reflectance * sky(g.reflected));
         continue;
       }
       const vec3 exit = g.exitPoint;
       const GlassDifferentials footprints =
           glassDifferentials(object, g, ray.dir, transferredDifferential(ray.diff, ray.dir, distance, object.normal));
-      rays[count++] = GlassRay(exit, g.leaving, weight * (1.0 - g.reflectance), inPoolWater(exit), object.sphere,
+      rays[count++] = GlassRay(exit, g.leaving, weight * glassLeavingWeight(g), inPoolWater(exit), object.sphere,
                                footprints.leaving);
       rays[count++] =
           GlassRay(met, g.reflected, weight * g.reflectance, ray.water, object.sphere, footprints.reflected);

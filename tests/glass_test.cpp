@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <span>
@@ -14,6 +15,7 @@
 #include "gpu_test.hpp"
 #include "reference/glass_view.hpp"
 #include "reference/image_error.hpp"
+#include "reference/path_tracer.hpp"
 #include "reference/reference_tracer.hpp"
 #include "render/renderer.hpp"
 #include "shared/glass.h"
@@ -230,7 +232,9 @@ class GlassTest : public GpuTest {
                                            waterPixelsTheGlassChanges(s, reference, without));
     std::printf("the floor through water and a glass %s, one sample, 320x180: %zu water pixels, RMSE %.4f\n", name,
                 e.pixels, e.rmse);
-    ASSERT_GT(e.pixels, 200u) << name;
+    // Measured 197 and 380: the sphere's top stands over the water, and
+    // what it shows of the water is 1 / n^2 as bright as it was once.
+    ASSERT_GT(e.pixels, 150u) << name;
     EXPECT_LT(e.rmse, bound) << name;
   }
 
@@ -571,6 +575,48 @@ TEST_F(GlassTest, GlassOfTheWatersIndexUnderTheWaterIsNotSeen) {
     EXPECT_LT(raster.rmse, 0.01) << name;
     EXPECT_LT(reference.rmse, 1e-4) << name;
   }
+}
+
+// Glass standing through the water's surface: radiance over n^2 is kept
+// along a ray, so the water's light seen from the air through the glass is
+// 1 / n^2 of it, as through the water's own surface. A glass box of index
+// 1.5 through still water, seen from the air, against the path-traced truth
+// (reference/path_tracer, 256 paths a pixel), over the pixels whose first
+// surface is the box above the water: the mean per channel, raster over
+// truth, and the tonemapped RMSE there. Measured 1.002, 0.984 and 0.978,
+// RMSE 0.0238; with the glass's light taken across unscaled, as it was,
+// 1.086, 1.229 and 1.267, RMSE 0.0664.
+TEST_F(GlassTest, GlassThroughTheSurfaceMatchesTheTruth) {
+  constexpr uint32_t width = 160, height = 90;
+  scene::Scene s = scene::defaultScene();
+  s.water.drops.clear();
+  s.spheres.clear();
+  s.boxes = {{.center = {0.0f, s.water.level + 0.05f, 0.0f},
+              .size = {0.7f, 0.5f, 0.45f},
+              .yawDegrees = 30.0f,
+              .material = "glass",
+              .ior = 1.5f}};
+  // The sky alone: glass boxes still let the sun through (docs/glass.md).
+  s.sky.sunRadiance = glm::vec3(0.0f);
+  s.camera.position = {1.1f, 0.8f, 1.5f};
+  s.camera.target = {0.0f, -0.2f, 0.0f};
+  const sim::WaterState water = sim::simulateWater(ctx(), s, 0);
+  const auto truth = render::renderPathTraced(s, &water, 0, width, height, {.samples = 256}).frame;
+  auto mask = render::glassPixelMask(truth, s);
+  for (size_t k = 0; k < mask.size(); ++k) mask[k] = mask[k] && truth.position[k * 4 + 1] > s.water.level + 0.02f;
+  const auto raster = supersampledRaster(s, width, height);
+  std::array<double, 3> sumRaster{}, sumTruth{};
+  for (size_t k = 0; k < mask.size(); ++k)
+    for (size_t c = 0; c < 3 && mask[k]; ++c) {
+      sumRaster[c] += raster[k * 4 + c];
+      sumTruth[c] += truth.rgba[k * 4 + c];
+    }
+  const auto e = render::tonemappedError(raster, truth.rgba, s.render.exposure, mask);
+  std::printf("glass through the surface: %zu pixels; raster over truth %.3f %.3f %.3f; RMSE %.4f\n", e.pixels,
+              sumRaster[0] / sumTruth[0], sumRaster[1] / sumTruth[1], sumRaster[2] / sumTruth[2], e.rmse);
+  ASSERT_GT(e.pixels, 400u);  // measured 612
+  for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(sumRaster[c] / sumTruth[c], 1.0, 0.1) << "channel " << c;
+  EXPECT_LT(e.rmse, 0.035);
 }
 
 // A ball lens turns the sky upside down and spreads each pixel's rays over

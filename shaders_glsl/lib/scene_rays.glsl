@@ -280,7 +280,7 @@ vec3 glassSeen(ObjectHit object, vec3 p, vec3 dir, RayDifferential rd, bool wate
   vec3 sum = vec3(0.0);
   TP_DONT_UNROLL for (int k = 0; k < 2; ++k) {
     const vec3 from = k == 0 ? g.exitPoint : p, along = k == 0 ? g.leaving : g.reflected;
-    sum += (k == 0 ? 1.0 - g.reflectance : g.reflectance) *
+    sum += (k == 0 ? glassLeavingWeight(g) : g.reflectance) *
            backdrop(from, along, k == 0 ? footprints.leaving : footprints.reflected);
   }
   return sum;

@@ -113,6 +113,16 @@ struct GlassExit {
   float exitIor;
 };
 
+// The weight of the ray that leaves: what the front surface lets in, times
+// the squared ratio of the indices of the medium the view ray came in by and
+// the one the ray leaves into. Radiance over n^2 is kept along a ray, so
+// the water's light seen from the air through glass that stands through the
+// surface is 1 / n^2 of it, as through the water's own surface.
+TP_INLINE float glassLeavingWeight(GlassExit g) {
+  float ratio = g.exitIor / g.entryIor;
+  return (1.0f - g.reflectance) * ratio * ratio;
+}
+
 // The front surface, met at a point of outward normal n along dir (unit):
 // its reflection and the refraction into the glass. outside: the index of
 // the medium the ray comes in. Where the glass's index is the lower of the

@@ -345,6 +345,11 @@ class Tracer {
     return skyImage_ ? skyImageRadiance(*skyImage_, dir) : shader::skyRadiance(sky_, dir, 1.0f);
   }
 
+  // The light along glass's two rays, each by its weight (shared/glass.h).
+  static glm::vec3 glassMix(const shader::GlassExit& g, glm::vec3 leaving, glm::vec3 reflected) {
+    return shader::glassLeavingWeight(g) * leaving + g.reflectance * reflected;
+  }
+
   // The glass model of shared/glass.h with the exact exit point, met by a
   // ray in a medium of index `outside`: the reflected ray and the ray
   // leaving the chord's far end traced on, in the water where they start
@@ -356,11 +361,11 @@ class Tracer {
     const glm::vec3 n = glm::normalize(p - glass.center);
     if (first) *first = {p, n};
     const shader::GlassExit g = shader::glassSphereExactExit(p, dir, n, glass.radius, glass.ior, outside, surround());
-    if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+    if (specular >= maxSpecular_) return glassMix(g, sky(g.leaving), sky(g.reflected));
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr, &glass);
     };
-    return glm::mix(follow(g.exitPoint, g.leaving), follow(p, g.reflected), g.reflectance);
+    return glassMix(g, follow(g.exitPoint, g.leaving), follow(p, g.reflected));
   }
 
   // The same for glass box `b`, met at p on the face of outward normal n:
@@ -370,11 +375,11 @@ class Tracer {
     if (first) *first = {p, n};
     const shader::GlassExit g = shader::glassBoxPaths(p, dir, n, glassBoxes_[b].center, glassBoxes_[b].halfSize,
                                                       glassBoxes_[b].glass.x, outside, surround());
-    if (specular >= maxSpecular_) return glm::mix(sky(g.leaving), sky(g.reflected), g.reflectance);
+    if (specular >= maxSpecular_) return glassMix(g, sky(g.leaving), sky(g.reflected));
     auto follow = [&](glm::vec3 from, glm::vec3 d) {
       return radiance(from, d, inPoolWater(from), specular + 1, path, nullptr);
     };
-    return glm::mix(follow(g.exitPoint, g.leaving), follow(p, g.reflected), g.reflectance);
+    return glassMix(g, follow(g.exitPoint, g.leaving), follow(p, g.reflected));
   }
 
   // What lies round glass: the pool's water below its rest level, the air.
