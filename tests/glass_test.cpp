@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <utility>
 
 #include "gpu_test.hpp"
 #include "reference/glass_view.hpp"
@@ -173,6 +174,35 @@ class GlassTest : public GpuTest {
       if (mask[k] && glm::dot(n, glm::normalize(s.camera.position - p)) < 0.3f) mask[k] = 0;
     }
     return againstTheFrameWithoutTheGlass(s, width, height, mask);
+  }
+
+  // Seen from above, the channels of the pixels away from the glass box of
+  // glassBoxView (and its neighbours) that differ from the frame without it.
+  std::pair<size_t, size_t> channelsAwayFromTheBoxThatChange(bool shadows, uint32_t width, uint32_t height) {
+    scene::Scene s = render::glassBoxView();
+    s.render.shadows = shadows;
+    s.camera.position = {0.4f, 3.0f, 2.0f};  // from above: the ground around the box, where its shadow would fall
+    const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 1});
+    const auto mask = render::glassPixelMask(reference, s);
+    render::Renderer withGlass(ctx(), s, width, height);
+    const auto glass = withGlass.render({.frame = 0, .hdr = true}).rgba;
+    render::Renderer behind(ctx(), withoutGlass(s), width, height);
+    const auto plain = behind.render({.frame = 0, .hdr = true}).rgba;
+    size_t away = 0, differ = 0;
+    for (size_t k = 0; k < mask.size(); ++k) {
+      // Its neighbours too: the raster's silhouette is not the reference's to the pixel.
+      bool nearGlass = false;
+      const int x = int(k % width), y = int(k / width);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int qx = std::clamp(x + dx, 0, int(width) - 1), qy = std::clamp(y + dy, 0, int(height) - 1);
+          nearGlass = nearGlass || mask[size_t(qy) * width + size_t(qx)];
+        }
+      if (nearGlass) continue;
+      ++away;
+      for (int c = 0; c < 3; ++c) differ += glass[k * 4 + c] != plain[k * 4 + c] ? 1 : 0;
+    }
+    return std::pair(away, differ);
   }
 
   // The raster at 4x4 samples per pixel, box filtered, as ReferenceRasterTest
@@ -437,36 +467,25 @@ TEST_F(GlassTest, GlassBoxOfIndexNearOneShowsTheSceneStraightThrough) {
   EXPECT_LT(e.rmse, kSceneThroughGlassBound);
 }
 
-// Glass lets the sun through: away from its own pixels the frame with a
-// glass box is the frame without it, to the bit (no shadow on the ground).
-TEST_F(GlassTest, AGlassBoxCastsNoShadow) {
+// A glass box casts its shadow and its light (GlassShadowTest measures them
+// against the truth) only as render.shadows has it: with them off, away
+// from its own pixels the frame with the box is the frame without it, to
+// the bit; with them on, the ground round it changes.
+TEST_F(GlassTest, AGlassBoxCastsItsLightOnlyWithShadowsOn) {
   constexpr uint32_t width = 160, height = 90;
-  scene::Scene s = render::glassBoxView();
-  s.camera.position = {0.4f, 3.0f, 2.0f};  // from above: the ground around the box, where its shadow would fall
-  const auto reference = render::renderReference(s, nullptr, 0, width, height, {.samples = 1});
-  const auto mask = render::glassPixelMask(reference, s);
-  render::Renderer withGlass(ctx(), s, width, height);
-  const auto glass = withGlass.render({.frame = 0, .hdr = true}).rgba;
-  render::Renderer behind(ctx(), withoutGlass(s), width, height);
-  const auto plain = behind.render({.frame = 0, .hdr = true}).rgba;
-  size_t away = 0, differ = 0;
-  for (size_t k = 0; k < mask.size(); ++k) {
-    // Its neighbours too: the raster's silhouette is not the reference's to the pixel.
-    bool nearGlass = false;
-    const int x = int(k % width), y = int(k / width);
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int qx = std::clamp(x + dx, 0, int(width) - 1), qy = std::clamp(y + dy, 0, int(height) - 1);
-        nearGlass = nearGlass || mask[size_t(qy) * width + size_t(qx)];
-      }
-    if (nearGlass) continue;
-    ++away;
-    for (int c = 0; c < 3; ++c) differ += glass[k * 4 + c] != plain[k * 4 + c] ? 1 : 0;
+  for (bool shadows : {false, true}) {
+    const auto [away, differ] = channelsAwayFromTheBoxThatChange(shadows, width, height);
+    std::printf(
+        "glass box from above, shadows %s: %zu pixels away from it, %zu channels differ from the frame "
+        "without it\n",
+        shadows ? "on" : "off", away, differ);
+    ASSERT_GT(away, size_t(width * height / 2));  // measured 13350
+    if (shadows) {
+      EXPECT_GT(differ, 300u);
+    } else {
+      EXPECT_EQ(differ, 0u);
+    }
   }
-  std::printf("glass box from above: %zu pixels away from it, %zu channels differ from the frame without it\n", away,
-              differ);
-  ASSERT_GT(away, size_t(width * height / 2));  // measured 13350
-  EXPECT_EQ(differ, 0u);
 }
 
 // The pool's floor seen through glass and then down through the water, at

@@ -43,7 +43,7 @@ TP_END
 #endif
 
 #ifdef __cplusplus
-static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 31 * 16 + (3 + 4 * 4) * 16);
+static_assert(sizeof(tp::shader::FrameUniforms) == 5 * 64 + 5 * 16 + 31 * 16 + (3 + 4 * 4 + 2 * 4) * 16);
 static_assert(offsetof(tp::shader::FrameUniforms, cameraPosition) == 256);
 #endif
 

@@ -1,6 +1,6 @@
 // Sun shadows: the share of the sun's disc a point sees past the opaque
 // spheres, the boxes and the pool's walls, and the light the glass spheres
-// in the air shade and focus, for every diffuse surface's sun term
+// in the air and the glass boxes shade and focus, for every diffuse surface's sun term
 // (shading.h). Shared with C++ to test it against closed forms and
 // against rays sampled over the disc; the raster's model traced takes only
 // the glass spheres' tables from it and traces its own shadow rays
@@ -297,10 +297,53 @@ TP_INLINE float glassSunShareInAir(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 
   return share;
 }
 
+// Where the sun's central ray through p meets the height `top`, in x and z:
+// the glass boxes' grids' coordinates across their layers. Under the water
+// (`inWater`, the ray's direction there, from `q` at the level) the ray is
+// followed up to the level first. Light the box lets straight through keeps
+// these coordinates all the way down.
+TP_INLINE vec2 sunSheared(vec3 p, vec3 toSun, vec3 inWater, bool underWater, float level, float top) {
+  vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
+  return vec2(q.x, q.z) + vec2(toSun.x, toSun.z) * ((top - q.y) / toSun.y);
+}
+
+// The glass boxes' light at p, relative to the open sun's: between the
+// eight nearest points of each grid that holds p (shading/glass_box_light.hpp).
+TP_INLINE float glassBoxesSunShare(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 toSun, vec3 inWater,
+                                   bool underWater) {
+  float share = 1.0f;
+  float level = TP_CASTERS_POOL(2);
+  for (uint i = 0u; i < (kGlassShadows ? uint(TP_CASTERS_GLASS(1)) : 0u); ++i) {
+    vec4 square = TP_CASTERS.glassBoxGrids[2u * i], heights = TP_CASTERS.glassBoxGrids[2u * i + 1u];
+    vec2 a = sunSheared(p, toSun, inWater, underWater, level, heights.z);
+    float side = float(TP_GLASS_BOX_SIDE - 1);
+    vec2 uv = (a - vec2(square.x, square.y)) / vec2(square.z - square.x, square.w - square.y) * side;
+    float w = (p.y - heights.x) / (heights.y - heights.x) * float(TP_GLASS_BOX_LAYERS - 1);
+    bool inside = min(uv.x, uv.y) >= 0.0f && max(uv.x, uv.y) < side && w >= 0.0f && w < float(TP_GLASS_BOX_LAYERS - 1);
+    // The grid read in a loop only the pixels inside enter (as glassSunShareInAir's).
+    for (int k = 0; k < (inside ? 1 : 0); ++k) {
+      uint u = uint(uv.x), v = uint(uv.y), l = uint(w);
+      vec2 f = uv - vec2(float(u), float(v));
+      float fl = w - float(l);
+      uint at = uint(TP_GLASS_BOX_GRIDS_START) + i * uint(TP_GLASS_BOX_SIZE) +
+                (l * uint(TP_GLASS_BOX_SIDE) + v) * uint(TP_GLASS_BOX_SIDE) + u;
+      float layers[2];
+      for (int j = 0; j < 2; ++j) {
+        uint base = at + uint(j) * uint(TP_GLASS_BOX_SIDE * TP_GLASS_BOX_SIDE);
+        float near = mix(TP_GLASS_TABLE(base), TP_GLASS_TABLE(base + 1u), f.x);
+        float far = mix(TP_GLASS_TABLE(base + uint(TP_GLASS_BOX_SIDE)), TP_GLASS_TABLE(base + uint(TP_GLASS_BOX_SIDE) + 1u), f.x);
+        layers[j] = mix(near, far, f.y);
+      }
+      share *= mix(layers[0], layers[1], fl);
+    }
+  }
+  return share;
+}
+
 // The same for any point: under the water it is read on the sun's ray up
 // from p, past where that ray leaves the water by its leg under the water
 // times how much the water narrows the disc (as sunVisibility widens the
-// disc for the casters).
+// disc for the casters); and the glass boxes' grids.
 TP_INLINE float glassSunShare(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 toSun) {
   if (!kGlassShadows || toSun.y <= 0.0f) return 1.0f;
   float h = TP_CASTERS_POOL(0), level = TP_CASTERS_POOL(2);
@@ -308,7 +351,8 @@ TP_INLINE float glassSunShare(TP_CASTERS_PARAM TP_GLASS_PARAM vec3 p, vec3 toSun
   vec3 inWater = underWater ? -refract(-toSun, vec3(0.0f, 1.0f, 0.0f), 1.0f / TP_CASTERS_POOL(3)) : toSun;
   vec3 q = underWater ? p + inWater * ((level - p.y) / inWater.y) : p;
   float narrowing = underWater ? sqrt(toSun.y / inWater.y) / TP_CASTERS_POOL(3) : 1.0f;
-  return glassSunShareInAir(TP_CASTERS_ARG TP_GLASS_ARG q - toSun * (narrowing * distance(p, q)), toSun);
+  return glassSunShareInAir(TP_CASTERS_ARG TP_GLASS_ARG q - toSun * (narrowing * distance(p, q)), toSun) *
+         glassBoxesSunShare(TP_CASTERS_ARG TP_GLASS_ARG p, toSun, inWater, underWater);
 }
 
 #ifndef __cplusplus
@@ -330,7 +374,10 @@ float frameOpenAirSunShare(vec3 p) { return 1.0; }
 #else
 float frameSunShare(vec3 p) { return sunVisibility(p, frameToSun()) * glassSunShare(p, frameToSun()); }
 float frameSunRayOpen(vec3 p) { return sunRayOpen(p, frameToSun()); }
-float frameOpenAirSunShare(vec3 p) { return openAirSunVisibility(p, frameToSun()) * glassSunShareInAir(p, frameToSun()); }
+float frameOpenAirSunShare(vec3 p) {
+  return openAirSunVisibility(p, frameToSun()) * glassSunShareInAir(p, frameToSun()) *
+         glassBoxesSunShare(p, frameToSun(), frameToSun(), false);
+}
 #endif
 #endif
 

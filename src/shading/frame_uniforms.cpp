@@ -50,6 +50,13 @@ shader::ShadowCasters shadowCasters(const scene::Scene& scene, float time) {
   for (const scene::Sphere* s : glassCasters(scene, time))
     c.glassSpheres[glass++] = glm::vec4(scene::sphereCenterAt(*s, time), s->radius);
   c.glass.x = float(glass);
+  uint32_t grids = 0;
+  for (const scene::Box* b : glassBoxCasters(scene)) {
+    const GlassBoxGrid g = glassBoxGridPlacement(scene, *b);
+    c.glassBoxGrids[2 * grids] = g.square;
+    c.glassBoxGrids[2 * grids++ + 1] = g.heights;
+  }
+  c.glass.y = float(grids);
   const bool pool = hasPool(scene);
   c.sun = glm::vec4(c.sun.x, float(spheres), float(boxes), pool ? 1.0f : 0.0f);
   if (pool) c.pool = glm::vec4(0.5f * scene.water.extent, scene.ground.height, scene.water.level, scene.water.ior);

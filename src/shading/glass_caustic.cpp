@@ -146,8 +146,9 @@ std::vector<const scene::Sphere*> glassCasters(const scene::Scene& scene, float 
 }
 
 bool glassCastsShadows(const scene::Scene& scene) {
-  return scene.render.shadows && std::any_of(scene.spheres.begin(), scene.spheres.end(),
-                                             [](const scene::Sphere& s) { return scene::isGlass(s); });
+  return (scene.render.shadows && std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                                              [](const scene::Sphere& s) { return scene::isGlass(s); })) ||
+         !glassBoxCasters(scene).empty();
 }
 
 bool GlassTableCache::fill(const scene::Scene& scene, float time, shader::GlassTables& tables) {
@@ -160,6 +161,27 @@ bool GlassTableCache::fill(const scene::Scene& scene, float time, shader::GlassT
     float* to = tables.values + slot++ * TP_GLASS_TABLE_SIZE;
     if (std::memcmp(to, it->second.data(), sizeof(float) * TP_GLASS_TABLE_SIZE) != 0) {
       std::memcpy(to, it->second.data(), sizeof(float) * TP_GLASS_TABLE_SIZE);
+      changed = true;
+    }
+  }
+  const std::vector<const scene::Box*> boxes = glassBoxCasters(scene);
+  boxes_.resize(boxes.size());
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    BoxTraced& t = boxes_[k];
+    const bool same = t.grid.values.size() == TP_GLASS_BOX_SIZE && t.box == *boxes[k] && t.sky == scene.sky &&
+                      t.water == scene.water && t.ground == scene.ground && t.pool == scene.pool &&
+                      t.terrain == scene.terrain;
+    if (!same)
+      t = {*boxes[k],
+           scene.sky,
+           scene.water,
+           scene.ground,
+           scene.pool,
+           scene.terrain,
+           glassBoxLightGrid(scene, *boxes[k])};
+    float* to = tables.values + TP_GLASS_BOX_GRIDS_START + k * TP_GLASS_BOX_SIZE;
+    if (std::memcmp(to, t.grid.values.data(), sizeof(float) * TP_GLASS_BOX_SIZE) != 0) {
+      std::memcpy(to, t.grid.values.data(), sizeof(float) * TP_GLASS_BOX_SIZE);
       changed = true;
     }
   }

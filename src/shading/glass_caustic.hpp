@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "shading/glass_box_light.hpp"
 #include "shared/shadow_casters.h"
 
 namespace tp::render {
@@ -40,11 +41,13 @@ std::vector<float> glassCausticTable(double ior, double sunRadius);
 // on, those in the air (wholly above the water's rest level, or off the
 // pool's square), the first TP_MAX_SPHERES, in the order their tables go.
 std::vector<const scene::Sphere*> glassCasters(const scene::Scene& scene, float time);
-// Whether the scene has glass spheres that may cast (at some time).
+// Whether the scene has glass that may cast (at some time): glass spheres,
+// or glass boxes that cast (glassBoxCasters).
 bool glassCastsShadows(const scene::Scene& scene);
 
 // The tables of the glass casters at a time, each traced once per index
-// and sun and kept.
+// and sun and kept; and the glass boxes' grids (glassBoxLightGrid), each
+// traced again only when the box, the sun or the water changes.
 class GlassTableCache {
  public:
   // Fills `tables` for the casters of `scene` at `time` (their order);
@@ -53,6 +56,17 @@ class GlassTableCache {
 
  private:
   std::map<std::pair<float, float>, std::vector<float>> traced_;  // by (ior, sun radius)
+  // What each glass box's grid was traced for, and the grid.
+  struct BoxTraced {
+    scene::Box box;
+    scene::Sky sky;
+    scene::Water water;
+    scene::Ground ground;
+    scene::Pool pool;
+    scene::Terrain terrain;
+    GlassBoxGrid grid;
+  };
+  std::vector<BoxTraced> boxes_;
 };
 
 }  // namespace tp::render

@@ -45,6 +45,15 @@ bool groundOutOfObjectShadows(const shader::ShadowCasters& casters, glm::vec3 to
     const glm::vec4 s = casters.glassSpheres[i];
     if (!outOfReach(glm::vec3(s), float(TP_GLASS_TABLE_REACH) * s.w)) return false;
   }
+  // A glass box's grid reaches its square, sheared back from the height it
+  // is taken at down the sun's ray to the ground (sun_shadow.h's sunSheared).
+  for (uint32_t i = 0; i < uint32_t(casters.glass.y); ++i) {
+    const glm::vec4 square = casters.glassBoxGrids[2 * i], heights = casters.glassBoxGrids[2 * i + 1];
+    if (groundHeight < heights.x || groundHeight > heights.y) continue;
+    const glm::vec2 shift = glm::vec2(toSun.x, toSun.z) * ((heights.z - groundHeight) / toSun.y);
+    const glm::vec2 low = glm::vec2(square.x, square.y) - shift, high = glm::vec2(square.z, square.w) - shift;
+    if (!(low.x > -hole && low.y > -hole && high.x < hole && high.y < hole)) return false;
+  }
   for (uint32_t i = 0; i < uint32_t(casters.sun.z); ++i) {
     if (!outOfReach(glm::vec3(casters.boxCenter[i]), glm::length(glm::vec3(casters.boxHalfSize[i])))) return false;
   }
