@@ -6,7 +6,10 @@
 // rho and clear water: that light times 1 / (1 - rho R), R the underside's
 // reflectance of the floor's Lambertian light (total internal reflection
 // outside the window), each bounce's light sent back by the surface. A
-// black sky and a sun: the floor's sunlit glow sent back the same way.
+// black sky and a sun: the floor's sunlit glow sent back the same way. The
+// walls above the water: the sky over the rim, the sky and the sun the flat
+// water mirrors (Fresnel's reflectance), and the floor's light through the
+// surface (Fresnel's transmission, 1 / n^2 of its radiance).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,7 +85,100 @@ double undersideReflectance(double ior) {
   return 2.0 * sum / steps;
 }
 
+// The baked irradiance of the walls above the water, averaged over the
+// middle half of wall `wall` (poolLightWall's order; -1: all four), every
+// row of the dry band.
+double middleOfTheDryBand(const scene::Scene& s, float sky, render::PoolLightSun sun = {}, int wall = -1) {
+  const render::PoolModel model = render::poolModel(s);
+  const std::vector<glm::vec4> all =
+      render::bakePoolLight(
+          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun)
+          .floorAndLight;
+  const glm::vec4* dry = all.data() + model.floorVertices.size() + TP_POOL_LIGHT_DRY_START;
+  double sum = 0.0;
+  int count = 0;
+  for (int w = 0; w < 4; ++w) {
+    if (wall >= 0 && w != wall) continue;
+    for (int row = 0; row < TP_POOL_LIGHT_UP; ++row)
+      for (int i = TP_POOL_LIGHT_ALONG / 4; i < 3 * TP_POOL_LIGHT_ALONG / 4; ++i, ++count)
+        sum += dry[(w * TP_POOL_LIGHT_UP + row) * TP_POOL_LIGHT_ALONG + i].y;
+  }
+  return sum / count;
+}
+
+// The integral over a vertical wall's half of the lower hemisphere of
+// `f`(mu) times the cosine to the wall's normal, mu the cosine from the
+// nadir: 2 times the integral of f(mu) sqrt(1 - mu^2) over mu.
+template <typename F>
+double lowerQuarter(const F& f) {
+  const int steps = 200000;
+  double sum = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double mu = (k + 0.5) / steps;
+    sum += f(mu) * std::sqrt(1.0 - mu * mu);
+  }
+  return 2.0 * sum / steps;
+}
+
 }  // namespace
+
+// A wall above black water under a sky of radiance 1, the far walls 100 m
+// off: the sky over the rim, half the upper hemisphere (pi / 2), and the
+// sky the water mirrors, Fresnel's reflectance times the cosine over the
+// lower quarter. The open sky's SH9, the raster's light there before, took
+// the ground's light for the lower quarter.
+TEST(PoolLight, AWallAboveTheWaterSeesTheSkyAndTheWatersMirror) {
+  const scene::Scene s = widePool(0.0f, 0.0f);
+  const double ior = s.water.ior;
+  const double expected = glm::pi<double>() / 2.0 + lowerQuarter([&](double mu) {
+                            return double(shader::fresnelDielectric(float(mu), 1.0f, float(ior)));
+                          });
+  const double baked = middleOfTheDryBand(s, 1.0f);
+  std::printf("the sky on the dry band: baked %.5f, closed form %.5f, ratio %.5f\n", baked, expected, baked / expected);
+  EXPECT_NEAR(baked / expected, 1.0, 0.005);
+}
+
+// The sun mirrored by flat water onto the wall at -x (inward normal +x):
+// Fresnel's reflectance at the sun's elevation times the cosine of the
+// mirrored sun to the wall. The sun's own arrival is not the bake's.
+TEST(PoolLight, AWallAboveTheWaterTakesTheSunTheWaterMirrors) {
+  const scene::Scene s = widePool(0.0f, 0.0f);
+  const glm::vec3 toSun = glm::normalize(glm::vec3(0.6f, 0.5f, 0.2f));
+  const double expected = shader::fresnelDielectric(toSun.y, 1.0f, s.water.ior) * toSun.x;
+  const double baked = middleOfTheDryBand(s, 0.0f, {toSun, glm::vec3(1.0f)}, 0);
+  std::printf("the mirrored sun on the dry band: baked %.6f, closed form %.6f\n", baked, expected);
+  EXPECT_NEAR(baked / expected, 1.0, 1e-3);
+  // The walls it does not face take none.
+  EXPECT_EQ(middleOfTheDryBand(s, 0.0f, {toSun, glm::vec3(1.0f)}, 1), 0.0);
+}
+
+// The pool's light through the surface: under a sun at the zenith and no
+// sky, a floor of albedo rho in clear water, the walls black, sends up rho /
+// pi times the sun's irradiance through the surface, 1 - F(1), in every
+// direction, and more by its bounces off the underside: at most 1 / (1 -
+// rho R) times that, as in the pool's middle; less where the floor is near
+// the black wall, which the wall's rays reach (a floor and walls both of
+// albedo 0.5 under a uniform sky gave 0.905 of the middle's light there).
+// Out of the water the light keeps Fresnel's transmission over n^2 of its
+// radiance, over the lower quarter. The sun neither lights the wall nor
+// meets its mirror there.
+TEST(PoolLight, AWallAboveTheWaterSeesThePoolsLightThroughTheSurface) {
+  const float rho = 0.2f;
+  scene::Scene s = widePool(rho, 0.0f);
+  s.pool.wallAlbedo = glm::vec3(0.0f);
+  const double ior = s.water.ior;
+  const double direct = rho / glm::pi<double>() * (1.0 - shader::fresnelDielectric(1.0f, 1.0f, float(ior)));
+  const double out =
+      lowerQuarter([&](double mu) { return 1.0 - double(shader::fresnelDielectric(float(mu), 1.0f, float(ior))); }) /
+      (ior * ior);
+  const double least = direct * out, most = least / (1.0 - rho * undersideReflectance(ior));
+  const double baked = middleOfTheDryBand(s, 0.0f, {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(1.0f)});
+  std::printf("the pool's light on the dry band: baked %.5f, closed forms without and with the bounces %.5f %.5f\n",
+              baked, least, most);
+  // The bounces' Monte Carlo noise, about 1% of them (measured on the floor).
+  EXPECT_GT(baked, least * 0.995);
+  EXPECT_LT(baked, most * 1.005);
+}
 
 TEST(PoolLight, TheSkyThroughFlatWaterOnABlackFloorIsTheWindowsIntegral) {
   for (const float absorption : {0.0f, 0.3f, 1.2f}) {

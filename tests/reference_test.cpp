@@ -38,6 +38,19 @@ scene::Scene blackPoolUnderWhiteSky() {
 
 }  // namespace
 
+// The mean ratio per channel counts the masked pixels alone, summed before
+// they are divided: red 1 and 3 over 2 and 2 is 1, green 2 and 2 over 2 and
+// 4 is 2 / 3, not the mean of the ratios.
+TEST(ImageError, MeanRatioSumsTheMaskedPixelsBeforeDividing) {
+  const std::vector<float> a = {1, 2, 4, 1, 3, 2, 4, 1, 100, 100, 100, 1};
+  const std::vector<float> b = {2, 2, 2, 1, 2, 4, 2, 1, 1, 1, 1, 1};
+  const std::vector<uint8_t> mask = {1, 1, 0};
+  const std::array<double, 3> r = render::meanRatio(a, b, mask);
+  EXPECT_DOUBLE_EQ(r[0], 1.0);
+  EXPECT_DOUBLE_EQ(r[1], 4.0 / 6.0);
+  EXPECT_DOUBLE_EQ(r[2], 2.0);
+}
+
 TEST(ReferenceTest, FlatWaterReflectsTheSkyByFresnelsEquations) {
   const scene::Scene s = blackPoolUnderWhiteSky();
   const sim::WaterState water = sim::flatState(s.water.grid);

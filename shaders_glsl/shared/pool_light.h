@@ -12,8 +12,11 @@
 // (shared/pool_trace.h's `floorVertices`): the floor's grid of
 // TP_POOL_LIGHT_FLOOR texels a side over the pool's square, then each wall's
 // TP_POOL_LIGHT_ALONG by TP_POOL_LIGHT_DOWN texels from the rest level down
-// to the floor's lowest vertex, walls in poolLightWall's order. Read
-// bilinearly between texel centres, clamped at the edges.
+// to the floor's lowest vertex, walls in poolLightWall's order; then each
+// wall's TP_POOL_LIGHT_ALONG by TP_POOL_LIGHT_UP texels above the water, from
+// the rim down to the rest level (the dry band: it sees the water and the
+// pool's other walls below its horizon, not the open ground the sky's SH9
+// holds there). Read bilinearly between texel centres, clamped at the edges.
 //
 // Then the light around: the radiance arriving from every direction, in
 // SH9 (9 vec4s a point, rgb), at the centres of a grid of cells over the
@@ -34,8 +37,10 @@
 #define TP_POOL_LIGHT_FLOOR 16
 #define TP_POOL_LIGHT_ALONG 16
 #define TP_POOL_LIGHT_DOWN 8
-#define TP_POOL_LIGHT_TEXELS \
-  (TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR + 4 * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN)
+#define TP_POOL_LIGHT_UP 4
+// The first of the dry band's texels.
+#define TP_POOL_LIGHT_DRY_START (TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR + 4 * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN)
+#define TP_POOL_LIGHT_TEXELS (TP_POOL_LIGHT_DRY_START + 4 * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_UP)
 #define TP_POOL_AROUND_SIDE 4
 #define TP_POOL_AROUND_LAYERS 3
 #define TP_POOL_AROUND_POINTS (TP_POOL_AROUND_SIDE * TP_POOL_AROUND_SIDE * TP_POOL_AROUND_LAYERS)
@@ -55,6 +60,12 @@ TP_INLINE int poolLightWall(vec3 n) {
 TP_INLINE vec2 poolLightWallUv(PoolParams pool, vec3 p, int wall) {
   float along = wall < 2 ? p.z : p.x;
   return vec2((along + pool.box.x) / (2.0f * pool.box.x), (pool.water.x - p.y) / (pool.water.x - pool.terrain.z));
+}
+
+// The same above the water: along it, and down from the rim to the rest level.
+TP_INLINE vec2 poolLightDryUv(PoolParams pool, vec3 p, int wall) {
+  float along = wall < 2 ? p.z : p.x;
+  return vec2((along + pool.box.x) / (2.0f * pool.box.x), (pool.box.y - p.y) / max(pool.box.y - pool.water.x, 1e-6f));
 }
 
 TP_INLINE vec3 poolLightTexel(PoolParams pool, int index TP_FLOOR_VERTICES_PARAM) {
@@ -87,6 +98,16 @@ TP_INLINE vec3 poolLightAt(PoolParams pool, vec3 p, vec3 n TP_FLOOR_VERTICES_PAR
   int wall = poolLightWall(n);
   int first = TP_POOL_LIGHT_FLOOR * TP_POOL_LIGHT_FLOOR + wall * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_DOWN;
   return poolLightGrid(pool, first, TP_POOL_LIGHT_ALONG, TP_POOL_LIGHT_DOWN, poolLightWallUv(pool, p, wall)
+                       TP_FLOOR_VERTICES_ARG);
+}
+
+// The baked irradiance at p on a wall above the water, but the sun's own
+// arrival: the sky over the rim, the sky and the sun the water reflects, the
+// pool's light through the surface and the other walls' light.
+TP_INLINE vec3 poolLightDryAt(PoolParams pool, vec3 p, vec3 n TP_FLOOR_VERTICES_PARAM) {
+  int wall = poolLightWall(n);
+  int first = TP_POOL_LIGHT_DRY_START + wall * TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_UP;
+  return poolLightGrid(pool, first, TP_POOL_LIGHT_ALONG, TP_POOL_LIGHT_UP, poolLightDryUv(pool, p, wall)
                        TP_FLOOR_VERTICES_ARG);
 }
 
@@ -137,13 +158,15 @@ TP_INLINE vec3 objectIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, ve
 }
 
 // The sun's and the sky's irradiance on a surface of the pool at p with
-// normal n, `sunShare` of the sun's. Above the water the open sky's (SH9)
-// and the sun's; under the rest level the sun through the flat surface and
-// the baked light.
+// normal n, `sunShare` of the sun's. Under the rest level the sun through
+// the flat surface and the baked light; a wall above the water the sun and
+// its own baked light; without water the open sky's (SH9) and the sun's.
 TP_INLINE vec3 poolIrradiance(PoolParams pool, FrameUniforms frame, vec3 p, vec3 n, float sunShare
                               TP_FLOOR_VERTICES_PARAM) {
   if (underRestLevel(pool, p))
     return sunShare * sunThroughFlatWater(pool, frame, p, n) + poolLightAt(pool, p, n TP_FLOOR_VERTICES_ARG);
+  if (pool.water.w > 0.0f && abs(n.y) < 0.5f)
+    return sunIrradianceOn(frame, n, sunShare) + poolLightDryAt(pool, p, n TP_FLOOR_VERTICES_ARG);
   return openAirIrradiance(frame, n, sunShare);
 }
 

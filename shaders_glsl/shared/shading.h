@@ -18,13 +18,17 @@
 
 TP_BEGIN
 
-// Radiance leaving a Lambertian surface of `albedo` with normal n: the sky
-// above the horizon seen from the normal (pi L (1 + n.y) / 2 for a uniform
-// sky L), and the sun, `sunShare` of it (the share of its disc in view,
-// sunVisibility, times the caustics under the water).
+// The sun's irradiance on a surface with normal n in the air, `sunShare` of
+// it (the share of its disc in view, sunVisibility, times the caustics
+// under the water).
+// And with the sky's: the sky above the horizon seen from the normal
+// (pi L (1 + n.y) / 2 for a uniform sky L).
+TP_INLINE vec3 sunIrradianceOn(FrameUniforms frame, vec3 n, float sunShare) {
+  return sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f);
+}
+
 TP_INLINE vec3 openAirIrradiance(FrameUniforms frame, vec3 n, float sunShare) {
-  return sunShare * vec3(frame.sunIrradiance) * max(dot(n, vec3(frame.sunDirection)), 0.0f) +
-         skyIrradiance(frame.skyIrradiance, n);
+  return sunIrradianceOn(frame, n, sunShare) + skyIrradiance(frame.skyIrradiance, n);
 }
 
 TP_INLINE vec3 lambertRadiance(FrameUniforms frame, vec3 albedo, vec3 n, float sunShare) {

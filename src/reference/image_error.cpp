@@ -69,6 +69,17 @@ ImageError tonemappedError(std::span<const float> a, std::span<const float> b, f
   });
 }
 
+std::array<double, 3> meanRatio(std::span<const float> a, std::span<const float> b, std::span<const uint8_t> mask) {
+  if (a.size() != b.size() || a.size() != mask.size() * 4) throw std::invalid_argument("meanRatio: sizes differ");
+  std::array<double, 3> sumA{}, sumB{};
+  for (size_t p = 0; p < mask.size(); ++p)
+    for (size_t c = 0; c < 3 && mask[p]; ++c) {
+      sumA[c] += a[p * 4 + c];
+      sumB[c] += b[p * 4 + c];
+    }
+  return {sumA[0] / sumB[0], sumA[1] / sumB[1], sumA[2] / sumB[2]};
+}
+
 ImageError displayError(std::span<const uint8_t> a, std::span<const uint8_t> b, std::span<const uint8_t> mask) {
   if (a.size() != b.size() || a.size() % 4 != 0) throw std::invalid_argument("displayError: images differ in size");
   return displayDifference(a.size() / 4, mask, [&](size_t p) {

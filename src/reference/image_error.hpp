@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -23,6 +24,10 @@ struct ImageError {
 // pixel), only pixels whose byte is non-zero count.
 ImageError tonemappedError(std::span<const float> a, std::span<const float> b, float exposure,
                            std::span<const uint8_t> mask = {});
+
+// The linear RGB of a over that of b, channel by channel, each summed over
+// the pixels whose mask byte is non-zero: a bias that RMSE does not sign.
+std::array<double, 3> meanRatio(std::span<const float> a, std::span<const float> b, std::span<const uint8_t> mask);
 
 // The same difference between two RGBA8 sRGB images (the tonemap pass's
 // output, a filtered one: the morphological anti-aliasing), in display units.

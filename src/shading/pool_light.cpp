@@ -71,14 +71,39 @@ class PoolLightBake {
     return window(p, n) + sum * (glm::pi<float>() / float(kDirections));
   }
 
+  // The irradiance at the dry band's texel k (counted from its first), but
+  // the sun's own arrival: the sky over the rim and the sky and the sun the
+  // flat water mirrors, summed over the sky's bins; the rest by the texel's
+  // directions: the other walls above the water, lit by the sun and,
+  // `withDry`, by the dry band's light the buffer holds (the pass before's),
+  // and the pool's light through the surface.
+  glm::vec3 dryTexel(uint32_t k, bool withDry) const {
+    glm::vec3 p, n;
+    dryTexelPoint(k, p, n);
+    p += kOffset * n;
+    glm::vec3 sum(0.0f);
+    for (const SkyBins::Bin& bin : skyBins_.bins()) {
+      if (glm::dot(n, bin.direction) > 0.0f && clearsTheRim(p, bin.direction))
+        sum += bin.light * glm::dot(n, bin.direction);
+      sum += bin.light * mirrored(p, n, bin.direction);
+    }
+    if (sun_.direction.y > 0.0f) sum += sun_.irradiance * mirrored(p, n, sun_.direction);
+    glm::vec3 rest(0.0f);
+    for (uint32_t i = 0; i < kDirections; ++i) {
+      const glm::vec3 d = cosineAbout(n, hammersley(i, kDirections));
+      rest += fromTheAir(p, d, withDry, shader::hashUint((TP_POOL_LIGHT_DRY_START + k) * kDirections + i));
+    }
+    return sum + rest * (glm::pi<float>() / float(kDirections));
+  }
+
   // How far along d from o the water's surface is, from below (1e30 going
   // down).
   float toSurface(glm::vec3 o, glm::vec3 d) const { return d.y > 0.0f ? (level_ - o.y) / d.y : 1e30f; }
 
   // A ray from o along d meeting the surface's underside `distance` on:
   // absorbed on the way, the sky through Snell's window added to `radiance`
-  // (n^2 its radiance times Fresnel's transmission, where the line out
-  // clears the rim) when `withSky`, and turned down, the reflected share
+  // (n^2 its radiance times Fresnel's transmission; the wall above the
+  // water's where the line out meets it) when `withSky`, and turned down, the reflected share
   // (all of it outside the window) left in `throughput`.
   void underside(glm::vec3& o, glm::vec3& d, float distance, glm::vec3& throughput, glm::vec3& radiance,
                  bool withSky) const {
@@ -87,7 +112,7 @@ class PoolLightBake {
     const float reflected = shader::fresnelDielectric(d.y, ior_, 1.0f);
     if (withSky && reflected < 1.0f) {
       const glm::vec3 air = glm::refract(d, glm::vec3(0.0f, -1.0f, 0.0f), ior_);
-      if (clearsTheRim(q, air)) radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * sky_(air);
+      radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * (clearsTheRim(q, air) ? sky_(air) : rim(q, air));
     }
     throughput *= reflected;
     d.y = -d.y;
@@ -141,19 +166,106 @@ class PoolLightBake {
   // the air's directions, Fresnel's transmission, the absorption along the
   // refracted line, and the solid angle the water compresses (cos in the
   // air over cos in the water; the radiance's n^2 and the solid angle's
-  // 1 / n^2 cancel), where the line clears the walls.
+  // 1 / n^2 cancel), where the line clears the walls under the water; the
+  // walls above it where the line out meets them.
   glm::vec3 window(glm::vec3 p, glm::vec3 n) const {
     glm::vec3 sum(0.0f);
     for (const SkyBins::Bin& bin : skyBins_.bins()) {
       const glm::vec3 up = refractedUp(bin.direction);
       const float facing = glm::dot(n, up);
       if (facing <= 0.0f) continue;
-      const float toSurface = seesOut(p, up, bin.direction);
-      if (toSurface < 0.0f) continue;
+      const float toSurface = (level_ - p.y) / up.y;
+      const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
+      if (std::min(walls.x, walls.y) < toSurface) continue;  // a wall under the water
+      const glm::vec3 q = p + toSurface * up;
+      const glm::vec3 light = clearsTheRim(q, bin.direction) ? bin.light : binSolidAngle_ * rim(q, bin.direction);
       const float transmitted = 1.0f - shader::fresnelDielectric(bin.direction.y, 1.0f, ior_);
-      sum += bin.light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-extinction_ * toSurface);
+      sum += light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-extinction_ * toSurface);
     }
     return sum;
+  }
+
+  // The share of light arriving along -`toLight` that the flat water
+  // mirrors onto p (above it) with normal n, times the cosine there: Fresnel's
+  // reflectance where the mirrored line meets the water before a wall and
+  // leaves it clear of the rim.
+  float mirrored(glm::vec3 p, glm::vec3 n, glm::vec3 toLight) const {
+    const glm::vec3 down(toLight.x, -toLight.y, toLight.z);
+    const float facing = glm::dot(n, down);
+    if (facing <= 0.0f || toLight.y <= 0.0f) return 0.0f;
+    const float s = (p.y - level_) / toLight.y;
+    const glm::vec2 walls = shader::poolWallDistances(pool_, p, down);
+    if (std::min(walls.x, walls.y) < s || !clearsTheRim(p + s * down, toLight)) return 0.0f;
+    return shader::fresnelDielectric(toLight.y, 1.0f, ior_) * facing;
+  }
+
+  // The light of the wall above the water that a ray in the air from o
+  // along d meets `distance` on, inward normal `normal`: its albedo over pi
+  // times the sun where it reaches and, `withDry`, the dry band's light
+  // the buffer holds (the pass before's).
+  glm::vec3 dryWall(glm::vec3 o, glm::vec3 d, float distance, glm::vec3 normal, bool withDry) const {
+    const glm::vec3 w = o + distance * d + kOffset * normal;
+    glm::vec3 e(0.0f);
+    if (glm::dot(normal, sun_.direction) > 0.0f && clearsTheRim(w, sun_.direction))
+      e += sun_.irradiance * glm::dot(normal, sun_.direction);
+    if (withDry) e += shader::poolLightDryAt(pool_, w, normal, vertices_);
+    return albedo(shader::PoolHit{distance, w, normal, false}, w) / glm::pi<float>() * e;
+  }
+
+  // The light of the wall above the water that a ray leaving the water's
+  // surface at q along `air` meets (short of the rim): what the dry band's
+  // texels hold so far (none before their first pass).
+  glm::vec3 rim(glm::vec3 q, glm::vec3 air) const {
+    const glm::vec2 walls = shader::poolWallDistances(pool_, q, air);
+    return dryWall(q, air, std::min(walls.x, walls.y), shader::poolWallNormal(walls, air), true);
+  }
+
+  // The radiance reaching o along -d from a ray in the air inside the pool
+  // (d's first leg from the dry band): a wall above the water (dryWall);
+  // the water, whose mirror is followed to a wall above it and whose
+  // refraction brings the pool's light out (1 / n^2 of it past Fresnel's
+  // transmission); the sky is the bins'.
+  glm::vec3 fromTheAir(glm::vec3 o, glm::vec3 d, bool withDry, uint32_t seed) const {
+    glm::vec3 weight(1.0f), radiance(0.0f);
+    for (int leg = 0; leg < 2; ++leg) {
+      const glm::vec2 walls = shader::poolWallDistances(pool_, o, d);
+      const float sWall = std::min(walls.x, walls.y);
+      const float sWater = d.y < 0.0f ? (o.y - level_) / -d.y : 1e30f;
+      if (sWall < sWater) {
+        if (o.y + sWall * d.y < pool_.box.y)
+          radiance += weight * dryWall(o, d, sWall, shader::poolWallNormal(walls, d), withDry);
+        break;
+      }
+      if (leg == 1) break;  // mirrored twice: the floor's light is the first mirror's
+      const glm::vec3 q = o + sWater * d;
+      const float reflected = shader::fresnelDielectric(-d.y, 1.0f, ior_);
+      const glm::vec3 below = glm::refract(d, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / ior_);
+      radiance +=
+          weight * ((1.0f - reflected) / (ior_ * ior_)) * incoming(q - glm::vec3(0.0f, kOffset, 0.0f), below, seed);
+      weight *= reflected;
+      o = q + glm::vec3(0.0f, kOffset, 0.0f);
+      d.y = -d.y;
+    }
+    return radiance;
+  }
+
+  // The dry band's texel k: on its wall, from the rim down to the rest level.
+  void dryTexelPoint(uint32_t k, glm::vec3& p, glm::vec3& n) const {
+    const float half = pool_.box.x;
+    const uint32_t w = k / (TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_UP);
+    const uint32_t cell = k % (TP_POOL_LIGHT_ALONG * TP_POOL_LIGHT_UP);
+    const float along = (2.0f * (float(cell % TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_ALONG - 1.0f) * half;
+    const float down = (float(cell / TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_UP;
+    const float y = pool_.box.y - down * (pool_.box.y - level_);
+    wallPoint(w, along, y, p, n);
+  }
+
+  // The point `along` its wall w (poolLightWall's order) at height y, and
+  // the wall's inward normal.
+  void wallPoint(uint32_t w, float along, float y, glm::vec3& p, glm::vec3& n) const {
+    const float side = w % 2 == 0 ? -pool_.box.x : pool_.box.x;
+    n = w < 2 ? glm::vec3(w == 0 ? 1.0f : -1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 0.0f, w == 2 ? 1.0f : -1.0f);
+    p = w < 2 ? glm::vec3(side, y, along) : glm::vec3(along, y, side);
   }
 
   // The floor under xz: the mesh met by a ray down from the rest level.
@@ -179,9 +291,7 @@ class PoolLightBake {
     const float along = (2.0f * (float(cell % TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_ALONG - 1.0f) * half;
     const float down = (float(cell / TP_POOL_LIGHT_ALONG) + 0.5f) / TP_POOL_LIGHT_DOWN;
     const float y = level_ - down * (level_ - pool_.terrain.z);
-    const float side = w % 2 == 0 ? -half : half;
-    n = w < 2 ? glm::vec3(w == 0 ? 1.0f : -1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 0.0f, w == 2 ? 1.0f : -1.0f);
-    p = w < 2 ? glm::vec3(side, y, along) : glm::vec3(along, y, side);
+    wallPoint(w, along, y, p, n);
     p.y = std::max(p.y, floorUnder(glm::vec2(p.x, p.z)).position.y + kAboveFloor);
   }
 
@@ -218,6 +328,8 @@ class PoolLightBake {
   const glm::vec4* vertices_;
   const SkyRadiance& sky_;
   SkyBins skyBins_;
+  // The solid angle of each of skyBins_'s bins (equal by construction).
+  float binSolidAngle_ = 2.0f * glm::pi<float>() / float(kSkyBands * kSkyAzimuths);
   PoolLightSun sun_;
   shader::FrameUniforms frame_{};
   float ior_ = 1.0f, level_ = 0.0f;
@@ -285,7 +397,20 @@ PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> f
   light.floorAndLight.resize(first + TP_POOL_LIGHT_SIZE);
   glm::vec4* texels = light.floorAndLight.data() + first;
   const PoolLightBake bake(pool, light.floorAndLight, sky, sun);
-  inParallel(TP_POOL_LIGHT_TEXELS, [&](uint32_t k) { texels[k] = glm::vec4(bake.texel(k), 0.0f); });
+  // The walls above the water first: the texels under it see them through
+  // the surface. The dry band sees the pool's light (its own paths), and its
+  // walls one another: a pass without their light, then one with the
+  // first's (what a third would add is the walls' albedo squared times
+  // their share of the view, under 1%).
+  constexpr uint32_t kDry = TP_POOL_LIGHT_TEXELS - TP_POOL_LIGHT_DRY_START;
+  if (pool.water.w > 0.0f && pool.box.y > pool.water.x) {
+    std::vector<glm::vec4> dry(kDry);
+    for (const bool withDry : {false, true}) {
+      inParallel(kDry, [&](uint32_t k) { dry[k] = glm::vec4(bake.dryTexel(k, withDry), 0.0f); });
+      std::copy(dry.begin(), dry.end(), texels + TP_POOL_LIGHT_DRY_START);
+    }
+  }
+  inParallel(TP_POOL_LIGHT_DRY_START, [&](uint32_t k) { texels[k] = glm::vec4(bake.texel(k), 0.0f); });
   // The light around reads the texels: after them.
   glm::vec4* around = texels + TP_POOL_LIGHT_TEXELS;
   inParallel(TP_POOL_AROUND_POINTS, [&](uint32_t k) {

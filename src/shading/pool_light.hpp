@@ -23,7 +23,11 @@ struct PoolLight {
   // stands (flat water at its rest level, the walls, the floor's mesh, no
   // objects): the first direction from a fixed cosine-weighted set, the
   // surface's Fresnel split followed both ways, the sun drawn at every
-  // later bounce. Then the light around at each of TP_POOL_AROUND_POINTS
+  // later bounce. The walls above the water (the dry band's texels) take
+  // the sky over the rim and the sky and the sun the flat water mirrors,
+  // summed over the sky's bins, and by a fixed set of cosine-weighted
+  // directions the pool's light through the surface and the other walls'
+  // (the sun's, and the dry band's of a first pass). Then the light around at each of TP_POOL_AROUND_POINTS
   // points in the water, 9 SH9 coefficients each: the radiance reaching
   // the point from every direction, each direction's ray meeting the sky
   // through the surface, or the floor or a wall, whose light is the baked
