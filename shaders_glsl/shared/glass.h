@@ -183,18 +183,10 @@ TP_INLINE GlassExit glassBoxPaths(vec3 p, vec3 dir, vec3 n, vec4 center, vec4 ha
   vec3 nOut = vec3(0.0f);
   g.insideLength = 0.0f;
   TP_DONT_UNROLL for (int k = 0; k <= TP_GLASS_BOX_REFLECTIONS; ++k) {
-    // The nearest of the three faces the ray heads for.
-    float s = 1e30f;
-    int axis = 0;
-    for (int a = 0; a < 3; ++a) {
-      float to = d[a] != 0.0f ? ((d[a] > 0.0f ? h[a] : -h[a]) - o[a]) / d[a] : 1e30f;
-      if (to < s) {
-        s = to;
-        axis = a;
-      }
-    }
-    o = clamp(o + s * d, -h, h);
-    g.insideLength += s;
+    BoxFaceAhead face = boxFaceAhead(o, d, h);
+    int axis = face.axis;
+    o = clamp(o + face.distance * d, -h, h);
+    g.insideLength += face.distance;
     nOut = vec3(0.0f);
     nOut[axis] = d[axis] > 0.0f ? 1.0f : -1.0f;
     g.exitPoint = vec3(center) + fromBoxFrame(o, center.w);

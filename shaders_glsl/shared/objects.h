@@ -86,6 +86,26 @@ TP_INLINE vec4 rayBox(vec3 origin, vec3 dir, vec4 center, vec4 halfSize) {
   return vec4(sNear, n);
 }
 
+// The nearest of the three faces that a ray from o along d, inside a box of
+// half sizes h, heads for (all in the box's frame): how far, and its axis.
+struct BoxFaceAhead {
+  float distance;
+  int axis;
+};
+TP_INLINE BoxFaceAhead boxFaceAhead(vec3 o, vec3 d, vec3 h) {
+  BoxFaceAhead face;
+  face.distance = 1e30f;
+  face.axis = 0;
+  for (int a = 0; a < 3; ++a) {
+    float to = d[a] != 0.0f ? ((d[a] > 0.0f ? h[a] : -h[a]) - o[a]) / d[a] : 1e30f;
+    if (to < face.distance) {
+      face.distance = to;
+      face.axis = a;
+    }
+  }
+  return face;
+}
+
 TP_END
 
 #ifdef __cplusplus

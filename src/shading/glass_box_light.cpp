@@ -31,18 +31,18 @@ constexpr float kStartAbove = 0.01f;
 enum class Medium { Air, Water, Glass };
 
 // What the traced rays see of the scene: the sun, the water's flat surface
-// over the pool's square, the box.
+// over the pool's square (`water`; its poolHalf 0 where there is no pool),
+// the box.
 struct Setting {
   glm::vec3 toSun{0.0f, 1.0f, 0.0f}, inWater{0.0f, 1.0f, 0.0f};
   float sunRadius = 0.0f;
-  bool pool = false;
-  float level = 0.0f, half = 0.0f, waterIor = 1.0f;
+  shader::GlassSurround water{0.0f, 0.0f, 1.0f};
   shader::BoxParams box{};
   float ior = 1.5f;
 
-  bool underWater(glm::vec3 p) const { return pool && std::max(std::abs(p.x), std::abs(p.z)) <= half && p.y < level; }
+  bool pool() const { return water.poolHalf > 0.0f; }
   glm::vec2 sheared(glm::vec3 p, float top) const {
-    return shader::sunSheared(p, toSun, inWater, underWater(p), level, top);
+    return shader::sunSheared(p, toSun, inWater, shader::inSurroundingWater(water, p), water.level, top);
   }
 };
 
@@ -50,11 +50,8 @@ Setting settingOf(const scene::Scene& scene, const scene::Box& box) {
   Setting s;
   s.toSun = sunDirection(scene.sky);
   s.sunRadius = glm::radians(scene.sky.sunAngularRadiusDegrees);
-  s.pool = hasPool(scene);
-  s.level = scene.water.level;
-  s.half = 0.5f * scene.water.extent;
-  s.waterIor = scene.water.ior;
-  s.inWater = s.pool ? -glm::refract(-s.toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / s.waterIor) : s.toSun;
+  if (hasPool(scene)) s.water = {scene.water.level, 0.5f * scene.water.extent, scene.water.ior};
+  s.inWater = s.pool() ? -glm::refract(-s.toSun, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / s.water.waterIor) : s.toSun;
   s.box = boxParams(box);
   s.ior = box.ior;
   return s;
@@ -79,7 +76,7 @@ GlassBoxGrid placement(const scene::Scene& scene, const Setting& s) {
     bottom = std::min(bottom, p.y);
   }
   // The lowest surface the light may reach: the pool's floor at its deepest, or the ground.
-  const float floor = s.pool ? scene.ground.height - scene.pool.depth - scene.terrain.amplitude : scene.ground.height;
+  const float floor = s.pool() ? scene.ground.height - scene.pool.depth - scene.terrain.amplitude : scene.ground.height;
   bottom = std::min(bottom, floor) - kStartAbove;
   glm::vec2 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
   for (const glm::vec3& p : c) {
@@ -103,49 +100,13 @@ struct Ray {
   Medium medium;
 };
 
-// The distance along a ray from outside to where it enters the box, and the
-// entry face's outward normal (box frame); infinity where it misses.
-float enterBox(const Setting& s, glm::vec3 p, glm::vec3 d, glm::vec3& normal) {
-  const glm::vec3 h(s.box.halfSize);
-  const glm::vec3 o = shader::toBoxFrame(p - glm::vec3(s.box.center), s.box.center.w);
-  const glm::vec3 v = shader::toBoxFrame(d, s.box.center.w);
-  float near = 0.0f, far = std::numeric_limits<float>::infinity();
-  int axis = -1;
-  for (int a = 0; a < 3; ++a) {
-    if (std::abs(v[a]) < 1e-12f) {
-      if (std::abs(o[a]) > h[a]) return std::numeric_limits<float>::infinity();
-      continue;
-    }
-    float t0 = (-h[a] - o[a]) / v[a], t1 = (h[a] - o[a]) / v[a];
-    if (t0 > t1) std::swap(t0, t1);
-    if (t0 > near) {
-      near = t0;
-      axis = a;
-    }
-    far = std::min(far, t1);
-  }
-  if (axis < 0 || near > far || near <= 0.0f) return std::numeric_limits<float>::infinity();
-  normal = glm::vec3(0.0f);
-  normal[axis] = v[axis] > 0.0f ? -1.0f : 1.0f;
-  return near;
-}
-
 // From inside the box: the distance to the face it leaves by, and that face's axis.
 float leaveBox(const Setting& s, glm::vec3 p, glm::vec3 d, int& axis) {
-  const glm::vec3 h(s.box.halfSize);
   const glm::vec3 o = shader::toBoxFrame(p - glm::vec3(s.box.center), s.box.center.w);
-  const glm::vec3 v = shader::toBoxFrame(d, s.box.center.w);
-  float t = std::numeric_limits<float>::infinity();
-  axis = 0;
-  for (int a = 0; a < 3; ++a) {
-    if (v[a] == 0.0f) continue;
-    const float to = ((v[a] > 0.0f ? h[a] : -h[a]) - o[a]) / v[a];
-    if (to < t) {
-      t = std::max(to, 0.0f);
-      axis = a;
-    }
-  }
-  return t;
+  const shader::BoxFaceAhead face =
+      shader::boxFaceAhead(o, shader::toBoxFrame(d, s.box.center.w), glm::vec3(s.box.halfSize));
+  axis = face.axis;
+  return std::max(face.distance, 0.0f);
 }
 
 // The light crossing each layer, tent by tent over the grid's points.
@@ -184,9 +145,6 @@ struct Layers {
   float step = 0.0f, layerStep = 0.0f;
 };
 
-// The index beyond the box's face at p: the water's under its level in the pool.
-float indexAt(const Setting& s, glm::vec3 p) { return s.underWater(p) ? s.waterIor : 1.0f; }
-
 // Follows one light ray and its branches down to the lowest layer.
 void trace(const Setting& s, Ray start, bool withBox, Layers& layers) {
   std::array<Ray, 16> stack{};
@@ -208,19 +166,19 @@ void trace(const Setting& s, Ray start, bool withBox, Layers& layers) {
         next = Next::Face;
       } else {
         if (withBox) {
-          const float tb = enterBox(s, r.p, r.d, entryNormal);
-          if (tb < t) t = tb, next = Next::Box;
+          const glm::vec4 hit = shader::rayBox(r.p, r.d, s.box.center, s.box.halfSize);
+          if (hit.x > 0.0f && hit.x < t) t = hit.x, next = Next::Box, entryNormal = glm::vec3(hit.y, hit.z, hit.w);
         }
-        if (r.medium == Medium::Air && s.pool && r.p.y > s.level) {
-          const float tl = (s.level - r.p.y) / r.d.y;
+        if (r.medium == Medium::Air && s.pool() && r.p.y > s.water.level) {
+          const float tl = (s.water.level - r.p.y) / r.d.y;
           const glm::vec3 q = r.p + tl * r.d;
-          if (tl < t && std::max(std::abs(q.x), std::abs(q.z)) <= s.half) t = tl, next = Next::Level;
+          if (tl < t && std::max(std::abs(q.x), std::abs(q.z)) <= s.water.poolHalf) t = tl, next = Next::Level;
         }
         if (r.medium == Medium::Water) {
           // The pool's walls end it (their shadow is the sun term's own).
           for (int a : {0, 2}) {
             if (r.d[a] == 0.0f) continue;
-            const float tw = ((r.d[a] > 0.0f ? s.half : -s.half) - r.p[a]) / r.d[a];
+            const float tw = ((r.d[a] > 0.0f ? s.water.poolHalf : -s.water.poolHalf) - r.p[a]) / r.d[a];
             if (tw < t) t = tw, next = Next::Wall;
           }
         }
@@ -230,15 +188,15 @@ void trace(const Setting& s, Ray start, bool withBox, Layers& layers) {
       if (next == Next::End || next == Next::Wall) break;
       if (next == Next::Level) {
         const float cosI = -r.d.y;
-        r.weight *= 1.0f - shader::fresnelDielectric(cosI, 1.0f, s.waterIor);
-        r.d = glm::normalize(glm::refract(r.d, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / s.waterIor));
+        r.weight *= 1.0f - shader::fresnelDielectric(cosI, 1.0f, s.water.waterIor);
+        r.d = glm::normalize(glm::refract(r.d, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f / s.water.waterIor));
         r.p = at;
         r.medium = Medium::Water;
         continue;
       }
       if (next == Next::Box) {
-        const glm::vec3 n = shader::fromBoxFrame(entryNormal, s.box.center.w);
-        const float outside = r.medium == Medium::Water ? s.waterIor : 1.0f;
+        const glm::vec3 n = entryNormal;
+        const float outside = r.medium == Medium::Water ? s.water.waterIor : 1.0f;
         const float cosI = std::max(-glm::dot(r.d, n), 0.0f);
         const float reflectance = shader::fresnelDielectric(cosI, outside, s.ior);
         // What the face reflects goes on outside: off a side, down to the ground.
@@ -254,7 +212,7 @@ void trace(const Setting& s, Ray start, bool withBox, Layers& layers) {
       glm::vec3 local(0.0f);
       local[axis] = shader::toBoxFrame(r.d, s.box.center.w)[axis] > 0.0f ? 1.0f : -1.0f;
       const glm::vec3 n = shader::fromBoxFrame(local, s.box.center.w);  // outward
-      const float beyond = indexAt(s, at);
+      const float beyond = shader::surroundIndexAt(s.water, at);
       const float cosI = std::max(glm::dot(r.d, n), 0.0f);
       const float reflectance = shader::fresnelDielectric(cosI, s.ior, beyond);
       const glm::vec3 mirrored = glm::normalize(glm::reflect(r.d, n));
@@ -322,7 +280,7 @@ GlassBoxGrid glassBoxLightGrid(const scene::Scene& scene, const scene::Box& box)
   const float step = (g.square.z - g.square.x) / float(TP_GLASS_BOX_SIDE - 1);
   const int rays = (TP_GLASS_BOX_SIDE + 1) * kRaysPerStep;
   const float top = g.heights.z;
-  const float start = std::max(top, s.pool ? s.level : top) + kStartAbove;
+  const float start = std::max(top, s.pool() ? s.water.level : top) + kStartAbove;
   for (int j = 0; j < rays; ++j) {
     for (int i = 0; i < rays; ++i) {
       const glm::vec2 a(g.square.x - step + (float(i) + 0.5f) * step / kRaysPerStep,

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <optional>
 #include <thread>
 
 #include "shading/hammersley.hpp"
@@ -55,7 +56,7 @@ class PoolLightBake {
     frame_.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
     ior_ = pool.water.y;
     level_ = pool.water.x;
-    extinction_ = absorption(pool);
+    absorption_ = absorption(pool);
   }
 
   // The irradiance at texel k (shared/pool_light.h's order).
@@ -74,10 +75,10 @@ class PoolLightBake {
   // The irradiance at the dry band's texel k (counted from its first), but
   // the sun's own arrival: the sky over the rim and the sky and the sun the
   // flat water mirrors, summed over the sky's bins; the rest by the texel's
-  // directions: the other walls above the water, lit by the sun and,
-  // `withDry`, by the dry band's light the buffer holds (the pass before's),
-  // and the pool's light through the surface.
-  glm::vec3 dryTexel(uint32_t k, bool withDry) const {
+  // directions: the other walls above the water, lit by the sun and by the
+  // dry band's light the buffer holds (the pass before's; none in the
+  // first), and the pool's light through the surface.
+  glm::vec3 dryTexel(uint32_t k) const {
     glm::vec3 p, n;
     dryTexelPoint(k, p, n);
     p += kOffset * n;
@@ -91,7 +92,7 @@ class PoolLightBake {
     glm::vec3 rest(0.0f);
     for (uint32_t i = 0; i < kDirections; ++i) {
       const glm::vec3 d = cosineAbout(n, hammersley(i, kDirections));
-      rest += fromTheAir(p, d, withDry, shader::hashUint((TP_POOL_LIGHT_DRY_START + k) * kDirections + i));
+      rest += fromTheAir(p, d, shader::hashUint((TP_POOL_LIGHT_DRY_START + k) * kDirections + i));
     }
     return sum + rest * (glm::pi<float>() / float(kDirections));
   }
@@ -100,6 +101,9 @@ class PoolLightBake {
   // down).
   float toSurface(glm::vec3 o, glm::vec3 d) const { return d.y > 0.0f ? (level_ - o.y) / d.y : 1e30f; }
 
+  // What the water takes from the bake's paths per metre (::absorption).
+  glm::vec3 waterAbsorption() const { return absorption_; }
+
   // A ray from o along d meeting the surface's underside `distance` on:
   // absorbed on the way, the sky through Snell's window added to `radiance`
   // (n^2 its radiance times Fresnel's transmission; the wall above the
@@ -107,12 +111,13 @@ class PoolLightBake {
   // (all of it outside the window) left in `throughput`.
   void underside(glm::vec3& o, glm::vec3& d, float distance, glm::vec3& throughput, glm::vec3& radiance,
                  bool withSky) const {
-    throughput *= glm::exp(-extinction_ * distance);
+    throughput *= glm::exp(-absorption_ * distance);
     const glm::vec3 q = o + distance * d;
     const float reflected = shader::fresnelDielectric(d.y, ior_, 1.0f);
     if (withSky && reflected < 1.0f) {
       const glm::vec3 air = glm::refract(d, glm::vec3(0.0f, -1.0f, 0.0f), ior_);
-      radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * (clearsTheRim(q, air) ? sky_(air) : rim(q, air));
+      const std::optional<glm::vec3> wall = wallAbove(q, air);
+      radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * (wall ? *wall : sky_(air));
     }
     throughput *= reflected;
     d.y = -d.y;
@@ -149,10 +154,17 @@ class PoolLightBake {
   // that line meets no wall and its way on along `air` clears the rim;
   // -1 when the pool hides the sky that way.
   float seesOut(glm::vec3 p, glm::vec3 up, glm::vec3 air) const {
+    const float toSurface = reachesTheSurface(p, up);
+    if (toSurface < 0.0f || !clearsTheRim(p + toSurface * up, air)) return -1.0f;
+    return toSurface;
+  }
+
+  // How far p is from the surface along `up` (in the water, rising) when
+  // that line meets no wall on the way; -1 when it does.
+  float reachesTheSurface(glm::vec3 p, glm::vec3 up) const {
     const float toSurface = (level_ - p.y) / up.y;
     const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
-    if (std::min(walls.x, walls.y) < toSurface || !clearsTheRim(p + toSurface * up, air)) return -1.0f;
-    return toSurface;
+    return std::min(walls.x, walls.y) < toSurface ? -1.0f : toSurface;
   }
 
   // The sun's irradiance at p with normal n through the flat surface, where
@@ -174,13 +186,12 @@ class PoolLightBake {
       const glm::vec3 up = refractedUp(bin.direction);
       const float facing = glm::dot(n, up);
       if (facing <= 0.0f) continue;
-      const float toSurface = (level_ - p.y) / up.y;
-      const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
-      if (std::min(walls.x, walls.y) < toSurface) continue;  // a wall under the water
-      const glm::vec3 q = p + toSurface * up;
-      const glm::vec3 light = clearsTheRim(q, bin.direction) ? bin.light : binSolidAngle_ * rim(q, bin.direction);
+      const float toSurface = reachesTheSurface(p, up);
+      if (toSurface < 0.0f) continue;  // a wall under the water
+      const std::optional<glm::vec3> wall = wallAbove(p + toSurface * up, bin.direction);
+      const glm::vec3 light = wall ? binSolidAngle_ * *wall : bin.light;
       const float transmitted = 1.0f - shader::fresnelDielectric(bin.direction.y, 1.0f, ior_);
-      sum += light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-extinction_ * toSurface);
+      sum += light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-absorption_ * toSurface);
     }
     return sum;
   }
@@ -201,23 +212,25 @@ class PoolLightBake {
 
   // The light of the wall above the water that a ray in the air from o
   // along d meets `distance` on, inward normal `normal`: its albedo over pi
-  // times the sun where it reaches and, `withDry`, the dry band's light
-  // the buffer holds (the pass before's).
-  glm::vec3 dryWall(glm::vec3 o, glm::vec3 d, float distance, glm::vec3 normal, bool withDry) const {
+  // times the sun where it reaches and the dry band's light the buffer
+  // holds (the pass before's; none before their first).
+  glm::vec3 dryWall(glm::vec3 o, glm::vec3 d, float distance, glm::vec3 normal) const {
     const glm::vec3 w = o + distance * d + kOffset * normal;
     glm::vec3 e(0.0f);
     if (glm::dot(normal, sun_.direction) > 0.0f && clearsTheRim(w, sun_.direction))
       e += sun_.irradiance * glm::dot(normal, sun_.direction);
-    if (withDry) e += shader::poolLightDryAt(pool_, w, normal, vertices_);
+    e += shader::poolLightDryAt(pool_, w, normal, vertices_);
     return albedo(shader::PoolHit{distance, w, normal, false}, w) / glm::pi<float>() * e;
   }
 
   // The light of the wall above the water that a ray leaving the water's
-  // surface at q along `air` meets (short of the rim): what the dry band's
-  // texels hold so far (none before their first pass).
-  glm::vec3 rim(glm::vec3 q, glm::vec3 air) const {
+  // surface at q along `air` meets short of the rim (dryWall's); none where
+  // the ray clears the rim (clearsTheRim) and sees the sky.
+  std::optional<glm::vec3> wallAbove(glm::vec3 q, glm::vec3 air) const {
     const glm::vec2 walls = shader::poolWallDistances(pool_, q, air);
-    return dryWall(q, air, std::min(walls.x, walls.y), shader::poolWallNormal(walls, air), true);
+    const float distance = std::min(walls.x, walls.y);
+    if (q.y + distance * air.y >= pool_.box.y) return std::nullopt;
+    return dryWall(q, air, distance, shader::poolWallNormal(walls, air));
   }
 
   // The radiance reaching o along -d from a ray in the air inside the pool
@@ -225,7 +238,7 @@ class PoolLightBake {
   // the water, whose mirror is followed to a wall above it and whose
   // refraction brings the pool's light out (1 / n^2 of it past Fresnel's
   // transmission); the sky is the bins'.
-  glm::vec3 fromTheAir(glm::vec3 o, glm::vec3 d, bool withDry, uint32_t seed) const {
+  glm::vec3 fromTheAir(glm::vec3 o, glm::vec3 d, uint32_t seed) const {
     glm::vec3 weight(1.0f), radiance(0.0f);
     for (int leg = 0; leg < 2; ++leg) {
       const glm::vec2 walls = shader::poolWallDistances(pool_, o, d);
@@ -233,7 +246,7 @@ class PoolLightBake {
       const float sWater = d.y < 0.0f ? (o.y - level_) / -d.y : 1e30f;
       if (sWall < sWater) {
         if (o.y + sWall * d.y < pool_.box.y)
-          radiance += weight * dryWall(o, d, sWall, shader::poolWallNormal(walls, d), withDry);
+          radiance += weight * dryWall(o, d, sWall, shader::poolWallNormal(walls, d));
         break;
       }
       if (leg == 1) break;  // mirrored twice: the floor's light is the first mirror's
@@ -311,7 +324,7 @@ class PoolLightBake {
       if (up < hit.distance) {
         underside(o, d, up, throughput, radiance, bounce > 0);
       } else {
-        throughput *= glm::exp(-extinction_ * hit.distance);
+        throughput *= glm::exp(-absorption_ * hit.distance);
         const glm::vec3 p = hit.position + kOffset * hit.normal;
         throughput *= albedo(hit, p);
         if (sunReaches(p)) radiance += throughput / glm::pi<float>() * sunThroughFlatWater(p, hit.normal);
@@ -333,7 +346,7 @@ class PoolLightBake {
   PoolLightSun sun_;
   shader::FrameUniforms frame_{};
   float ior_ = 1.0f, level_ = 0.0f;
-  glm::vec3 extinction_{0.0f};
+  glm::vec3 absorption_{0.0f};
 };
 
 // Directions over the sphere for the light around: a Fibonacci lattice.
@@ -358,7 +371,7 @@ shader::Sh9 lightAroundAt(const PoolLightBake& bake, const shader::PoolParams& p
         bake.underside(o, dir, up, throughput, radiance, true);
         continue;
       }
-      throughput *= glm::exp(-absorption(pool) * hit.distance);
+      throughput *= glm::exp(-bake.waterAbsorption() * hit.distance);
       const glm::vec3 p = hit.position + kOffset * hit.normal;
       glm::vec3 irradiance = shader::poolLightAt(pool, p, hit.normal, data);
       if (bake.sunReaches(p)) irradiance += bake.sunThroughFlatWater(p, hit.normal);
@@ -405,8 +418,8 @@ PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> f
   constexpr uint32_t kDry = TP_POOL_LIGHT_TEXELS - TP_POOL_LIGHT_DRY_START;
   if (pool.water.w > 0.0f && pool.box.y > pool.water.x) {
     std::vector<glm::vec4> dry(kDry);
-    for (const bool withDry : {false, true}) {
-      inParallel(kDry, [&](uint32_t k) { dry[k] = glm::vec4(bake.dryTexel(k, withDry), 0.0f); });
+    for (int pass = 0; pass < 2; ++pass) {
+      inParallel(kDry, [&](uint32_t k) { dry[k] = glm::vec4(bake.dryTexel(k), 0.0f); });
       std::copy(dry.begin(), dry.end(), texels + TP_POOL_LIGHT_DRY_START);
     }
   }
