@@ -16,6 +16,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "scene/scene.hpp"
+#include "shading/objects_model.hpp"
 #include "shading/pool_light.hpp"
 #include "shading/pool_model.hpp"
 #include "shared/glass.h"
@@ -47,8 +48,7 @@ scene::Scene widePool(float rho, float absorption) {
 float middleOfTheFloor(const scene::Scene& s, float sky = 1.0f, render::PoolLightSun sun = {}) {
   const render::PoolModel model = render::poolModel(s);
   const std::vector<glm::vec4> all =
-      render::bakePoolLight(
-          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun)
+      render::bakePoolLight(model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, {})
           .floorAndLight;
   const glm::vec4* light = all.data() + model.floorVertices.size();
   constexpr int kFrom = TP_POOL_LIGHT_FLOOR / 4, kTo = 3 * TP_POOL_LIGHT_FLOOR / 4;
@@ -91,8 +91,7 @@ double undersideReflectance(double ior) {
 double middleOfTheDryBand(const scene::Scene& s, float sky, render::PoolLightSun sun = {}, int wall = -1) {
   const render::PoolModel model = render::poolModel(s);
   const std::vector<glm::vec4> all =
-      render::bakePoolLight(
-          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun)
+      render::bakePoolLight(model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, {})
           .floorAndLight;
   const glm::vec4* dry = all.data() + model.floorVertices.size() + TP_POOL_LIGHT_DRY_START;
   double sum = 0.0;
@@ -193,6 +192,101 @@ TEST(PoolLight, TheSkyThroughFlatWaterOnABlackFloorIsTheWindowsIntegral) {
   }
 }
 
+// The floor texel (i, j)'s baked irradiance, among `boxes`.
+glm::vec3 floorTexel(const scene::Scene& s, int i, int j, render::PoolLightSun sun = {}) {
+  const render::PoolModel model = render::poolModel(s);
+  const std::vector<glm::vec4> all =
+      render::bakePoolLight(
+          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(1.0f); }, sun, render::opaqueBoxes(s))
+          .floorAndLight;
+  return glm::vec3(all[model.floorVertices.size() + size_t(j * TP_POOL_LIGHT_FLOOR + i)]);
+}
+
+// A black box in the air over a black floor under a sky of radiance 1:
+// the window's integral (as skyThroughTheWindow) over the air's directions
+// whose line, refracted up from the texel's point and on out of the water,
+// misses the box (a slab test here), by quadrature over the cosine and the
+// azimuth. Without the box the bake gives the whole window.
+TEST(PoolLight, ABoxInTheAirHidesTheSkyItStandsBefore) {
+  scene::Scene s = widePool(0.0f, 0.3f);
+  const int texel = TP_POOL_LIGHT_FLOOR / 2;
+  const float half = 0.5f * s.water.extent;
+  const float x = (2.0f * (float(texel) + 0.5f) / TP_POOL_LIGHT_FLOOR - 1.0f) * half;
+  const glm::vec3 p(x, s.ground.height - s.pool.depth, x);
+  const double depth = s.water.level - p.y, ior = s.water.ior;
+  scene::Box box;
+  box.size = glm::vec3(1.2f, 0.5f, 0.8f);
+  box.center = glm::vec3(x + 0.3f, s.water.level + 1.0f, x - 0.2f);
+  box.albedo = glm::vec3(0.0f);
+  const glm::vec3 low = box.center - 0.5f * box.size, high = box.center + 0.5f * box.size;
+  auto misses = [&](glm::dvec3 o, glm::dvec3 d) {
+    double near = 0.0, far = 1e30;
+    for (int a = 0; a < 3; ++a) {
+      const double t0 = (low[a] - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
+      near = std::max(near, std::min(t0, t1));
+      far = std::min(far, std::max(t0, t1));
+    }
+    return near > far;
+  };
+  const int steps = 1500;
+  double sum = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double mu = (k + 0.5) / steps, sinAir = std::sqrt(1.0 - mu * mu);
+    const double sinWater = sinAir / ior, cosWater = std::sqrt(1.0 - sinWater * sinWater);
+    const double t = 1.0 - shader::fresnelDielectric(float(mu), 1.0f, float(ior));
+    for (int m = 0; m < 4 * steps; ++m) {
+      const double phi = 2.0 * glm::pi<double>() * (m + 0.5) / (4 * steps);
+      const glm::dvec3 across(std::cos(phi), 0.0, std::sin(phi));
+      const glm::dvec3 q = glm::dvec3(p) + depth * (across * (sinWater / cosWater) + glm::dvec3(0.0, 1.0, 0.0));
+      if (misses(q, across * sinAir + glm::dvec3(0.0, mu, 0.0)))
+        sum += t * mu * std::exp(-double(s.water.absorption.x) * depth / cosWater);
+    }
+  }
+  const double expected = sum * 2.0 * glm::pi<double>() / (double(steps) * 4 * steps);
+  const double open = floorTexel(s, texel, texel).y;
+  s.boxes.push_back(box);
+  const double baked = floorTexel(s, texel, texel).y;
+  std::printf("under a box in the air: baked %.5f, quadrature %.5f, ratio %.5f; without the box %.5f\n", baked,
+              expected, baked / expected, open);
+  EXPECT_NEAR(baked / expected, 1.0, 0.01);
+  EXPECT_GT(open / expected, 1.1);  // what the box takes is ten times the bound
+}
+
+// A lid: a box over the whole pool, just above the water, which stands at
+// the rim. Nothing reaches the water but through the lid, whose underside
+// neither the sky nor the sun lights: the pool is dark, the sun's bounces
+// and the light around included, whatever the lid's albedo.
+TEST(PoolLight, ALidOverTheWaterLeavesThePoolDark) {
+  scene::Scene s = widePool(0.5f, 0.0f);
+  s.water.level = s.ground.height;
+  scene::Box lid;
+  // 2 km wide, 1 mm over the water: a line out of it at a grazing angle
+  // could pass under the lid's edge only below 1e-6 of a radian.
+  lid.size = glm::vec3(2000.0f, 0.2f, 2000.0f);
+  lid.center = glm::vec3(0.0f, s.water.level + 0.101f, 0.0f);
+  lid.albedo = glm::vec3(0.8f);
+  const render::PoolLightSun sun{glm::normalize(glm::vec3(0.3f, 0.8f, 0.1f)), glm::vec3(3.0f)};
+  const render::PoolModel model = render::poolModel(s);
+  const size_t first = model.floorVertices.size();
+  auto bake = [&] {
+    return render::bakePoolLight(
+               model.params, model.floorVertices, [](glm::vec3) { return glm::vec3(1.0f); }, sun,
+               render::opaqueBoxes(s))
+        .floorAndLight;
+  };
+  const std::vector<glm::vec4> open = bake();
+  s.boxes.push_back(lid);
+  const std::vector<glm::vec4> covered = bake();
+  double lit = 0.0, dark = 0.0;
+  for (size_t k = first; k < covered.size(); ++k) {
+    lit += std::abs(open[k].x) + std::abs(open[k].y) + std::abs(open[k].z);
+    dark += std::abs(covered[k].x) + std::abs(covered[k].y) + std::abs(covered[k].z);
+  }
+  std::printf("the pool's light summed: %.3f open, %.3g under the lid\n", lit, dark);
+  EXPECT_GT(lit, 1.0);
+  EXPECT_EQ(dark, 0.0);
+}
+
 TEST(PoolLight, TheUndersideSendsTheFloorsLightBackAsItsReflectanceSays) {
   const double direct = skyThroughTheWindow(scene::Water{}.ior, 1.0, 0.0);
   const double r = undersideReflectance(scene::Water{}.ior);
@@ -236,7 +330,7 @@ TEST(PoolLight, TheLightAroundIsSnellsWindowInSh9) {
   const scene::Scene s = widePool(0.0f, 0.0f);
   const render::PoolModel model = render::poolModel(s);
   const render::PoolLight light =
-      render::bakePoolLight(model.params, model.floorVertices, [](glm::vec3) { return glm::vec3(1.0f); }, {});
+      render::bakePoolLight(model.params, model.floorVertices, [](glm::vec3) { return glm::vec3(1.0f); }, {}, {});
   const double ior = s.water.ior;
   const int steps = 200000;
   double expected[9] = {};

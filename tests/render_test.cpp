@@ -296,7 +296,7 @@ TEST_F(WaterRenderTest, FlatWaterShowsTheFloorWhereSnellsLawPutsIt) {
   const render::PoolModel pool = render::poolModel(s);
   const render::PoolLight baked = render::bakePoolLight(
       pool.params, pool.floorVertices, [&](glm::vec3 dir) { return shader::skyRadiance(sky, dir, 0.0f); },
-      {glm::vec3(u.sunDirection), glm::vec3(u.sunIrradiance)});
+      {glm::vec3(u.sunDirection), glm::vec3(u.sunIrradiance)}, {});
   auto parityAt = [&](glm::vec2 xz, bool& nearEdge) {
     const glm::vec2 q = xz / s.pool.tileSize;
     const glm::vec2 f = q - glm::floor(q);

@@ -120,7 +120,7 @@ class Tracer {
       PoolLight light = bakePoolLight(
           pool_, std::move(pool.floorVertices),
           [&](glm::vec3 d) { return skyImage_ ? skyImageRadiance(*skyImage_, d) : shader::skyRadiance(sky_, d, 0.0f); },
-          PoolLightSun{glm::vec3(uniforms.sunDirection), glm::vec3(uniforms.sunIrradiance)});
+          PoolLightSun{glm::vec3(uniforms.sunDirection), glm::vec3(uniforms.sunIrradiance)}, opaqueBoxes(scene));
       floorVertices_ = std::move(light.floorAndLight);
       poolHalf_ = 0.5f * scene.water.extent;
       level_ = scene.water.level;

@@ -9,6 +9,7 @@
 #include "render/pass_kinds.hpp"
 #include "render/sky_image.hpp"
 #include "shading/frame_uniforms.hpp"
+#include "shading/objects_model.hpp"
 #include "shading/pool_light.hpp"
 #include "shading/pool_model.hpp"
 #include "shading/water_model.hpp"
@@ -27,16 +28,18 @@ PoolLight bakedLight(const scene::Scene& scene, const PoolModel& model, const Sk
   struct Bake {
     shader::PoolParams pool;
     scene::Sky sky;
+    std::vector<scene::Box> boxes;
     PoolLight light;
   };
   static std::mutex mutex;
   static std::optional<Bake> last;
   const std::lock_guard lock(mutex);
-  if (!last || std::memcmp(&last->pool, &model.params, sizeof(model.params)) != 0 || !(last->sky == scene.sky)) {
-    last = Bake{model.params, scene.sky,
+  if (!last || std::memcmp(&last->pool, &model.params, sizeof(model.params)) != 0 || !(last->sky == scene.sky) ||
+      last->boxes != scene.boxes) {
+    last = Bake{model.params, scene.sky, scene.boxes,
                 bakePoolLight(
                     model.params, model.floorVertices, [&](glm::vec3 d) { return sky.radiance(d); },
-                    PoolLightSun{sky.light().sunDirection, sky.light().sunIrradiance})};
+                    PoolLightSun{sky.light().sunDirection, sky.light().sunIrradiance}, opaqueBoxes(scene))};
   }
   return last->light;
 }

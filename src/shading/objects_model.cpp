@@ -36,6 +36,13 @@ shader::BoxParams boxParams(const scene::Box& box) {
           glm::vec4(box.albedo, 0.0f)};
 }
 
+std::vector<shader::BoxParams> opaqueBoxes(const scene::Scene& scene) {
+  std::vector<shader::BoxParams> boxes;
+  for (const scene::Box& b : scene.boxes)
+    if (!scene::isGlass(b)) boxes.push_back(boxParams(b));
+  return boxes;
+}
+
 scene::Mesh boxMesh(const scene::Box& box, const std::string& name) {
   const shader::BoxParams p = boxParams(box);
   const glm::vec3 ax = shader::boxAxisX(p.center.w), ay(0.0f, 1.0f, 0.0f), az = shader::boxAxisZ(p.center.w);

@@ -29,6 +29,8 @@ shader::SceneObjects sceneObjects(const scene::Scene& scene, float waterTop = st
 uint32_t sphereSlot(const shader::SceneObjects& objects, const scene::Sphere& sphere);
 shader::SphereParams sphereParams(const scene::Sphere& sphere);
 shader::BoxParams boxParams(const scene::Box& box);
+// The boxes that are not glass: what stands still and blocks light (the pool's bake sees them).
+std::vector<shader::BoxParams> opaqueBoxes(const scene::Scene& scene);
 // A glass sphere's draw, with the binary search's steps (render.glass_search_steps)
 // and its slot among the objects the glass's own rays pass by (sphereSlot).
 shader::GlassSphereParams glassSphereParams(const scene::Sphere& sphere, unsigned searchSteps, uint32_t slot);

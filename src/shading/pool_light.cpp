@@ -1,6 +1,7 @@
 #include "shading/pool_light.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -9,6 +10,7 @@
 
 #include "shading/hammersley.hpp"
 #include "shared/noise.h"
+#include "shared/objects.h"
 #include "shared/pool_light.h"
 
 namespace tp::render {
@@ -18,7 +20,10 @@ namespace {
 // cut in equal solid angles: this many bands of the cosine from the zenith,
 // and of azimuth (SkyBins); each holds the sky's mean over kSkySubsamples^2
 // points, so that a bright blob smaller than a bin still brings its light.
-constexpr uint32_t kSkyBands = 16, kSkyAzimuths = 64, kSkySubsamples = 4;
+// A bin is hidden (by a wall, a box) or not as its centre is: at 16 x 64
+// bins a box in the air over a texel took 2.1% too little of its light
+// (PoolLight.ABoxInTheAirHidesTheSkyItStandsBefore), at 32 x 128 0.01%.
+constexpr uint32_t kSkyBands = 32, kSkyAzimuths = 128, kSkySubsamples = 2;
 // Cosine-weighted directions from each texel for the light that comes
 // back: the same Hammersley set for every texel, so that the error varies
 // smoothly from texel to texel rather than as noise.
@@ -46,17 +51,20 @@ glm::vec3 absorption(const shader::PoolParams& pool) { return glm::vec3(pool.ext
 class PoolLightBake {
  public:
   PoolLightBake(const shader::PoolParams& pool, const std::vector<glm::vec4>& floorVertices, const SkyRadiance& sky,
-                const PoolLightSun& sun)
+                const PoolLightSun& sun, const std::vector<shader::BoxParams>& boxes)
       : pool_(pool),
         vertices_(floorVertices.data()),
         sky_(sky),
         skyBins_(sky, kSkyBands, kSkyAzimuths, kSkySubsamples),
-        sun_(sun) {
+        sun_(sun),
+        boxes_(boxes) {
     frame_.sunDirection = glm::vec4(sun.direction, 0.0f);
     frame_.sunIrradiance = glm::vec4(sun.irradiance, 0.0f);
     ior_ = pool.water.y;
     level_ = pool.water.x;
     absorption_ = absorption(pool);
+    for (const shader::BoxParams& b : boxes_)
+      for (const glm::vec3& n : boxFaceNormals(b)) boxFaceLight_.push_back(openIrradiance(n));
   }
 
   // The irradiance at texel k (shared/pool_light.h's order).
@@ -116,8 +124,8 @@ class PoolLightBake {
     const float reflected = shader::fresnelDielectric(d.y, ior_, 1.0f);
     if (withSky && reflected < 1.0f) {
       const glm::vec3 air = glm::refract(d, glm::vec3(0.0f, -1.0f, 0.0f), ior_);
-      const std::optional<glm::vec3> wall = wallAbove(q, air);
-      radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * (wall ? *wall : sky_(air));
+      const std::optional<glm::vec3> met = metAbove(q, air);
+      radiance += throughput * ((1.0f - reflected) * ior_ * ior_) * (met ? *met : sky_(air));
     }
     throughput *= reflected;
     d.y = -d.y;
@@ -155,16 +163,19 @@ class PoolLightBake {
   // -1 when the pool hides the sky that way.
   float seesOut(glm::vec3 p, glm::vec3 up, glm::vec3 air) const {
     const float toSurface = reachesTheSurface(p, up);
-    if (toSurface < 0.0f || !clearsTheRim(p + toSurface * up, air)) return -1.0f;
+    if (toSurface < 0.0f) return -1.0f;
+    const glm::vec3 q = p + toSurface * up;
+    if (!clearsTheRim(q, air) || nearestBox(q, air, 1e30f).index >= 0) return -1.0f;
     return toSurface;
   }
 
   // How far p is from the surface along `up` (in the water, rising) when
-  // that line meets no wall on the way; -1 when it does.
+  // that line meets no wall and no box on the way; -1 when it does.
   float reachesTheSurface(glm::vec3 p, glm::vec3 up) const {
     const float toSurface = (level_ - p.y) / up.y;
     const glm::vec2 walls = shader::poolWallDistances(pool_, p, up);
-    return std::min(walls.x, walls.y) < toSurface ? -1.0f : toSurface;
+    if (std::min(walls.x, walls.y) < toSurface || nearestBox(p, up, toSurface).index >= 0) return -1.0f;
+    return toSurface;
   }
 
   // The sun's irradiance at p with normal n through the flat surface, where
@@ -187,9 +198,10 @@ class PoolLightBake {
       const float facing = glm::dot(n, up);
       if (facing <= 0.0f) continue;
       const float toSurface = reachesTheSurface(p, up);
-      if (toSurface < 0.0f) continue;  // a wall under the water
-      const std::optional<glm::vec3> wall = wallAbove(p + toSurface * up, bin.direction);
-      const glm::vec3 light = wall ? binSolidAngle_ * *wall : bin.light;
+      // A wall or a box under the water: its light is incoming()'s.
+      if (toSurface < 0.0f) continue;
+      const std::optional<glm::vec3> met = metAbove(p + toSurface * up, bin.direction);
+      const glm::vec3 light = met ? binSolidAngle_ * *met : bin.light;
       const float transmitted = 1.0f - shader::fresnelDielectric(bin.direction.y, 1.0f, ior_);
       sum += light * (transmitted * bin.direction.y * facing / up.y) * glm::exp(-absorption_ * toSurface);
     }
@@ -223,14 +235,64 @@ class PoolLightBake {
     return albedo(shader::PoolHit{distance, w, normal, false}, w) / glm::pi<float>() * e;
   }
 
-  // The light of the wall above the water that a ray leaving the water's
-  // surface at q along `air` meets short of the rim (dryWall's); none where
-  // the ray clears the rim (clearsTheRim) and sees the sky.
-  std::optional<glm::vec3> wallAbove(glm::vec3 q, glm::vec3 air) const {
+  // The light of what a ray leaving the water's surface at q along `air`
+  // meets before the sky: a wall above the water short of the rim
+  // (dryWall's), or a box (boxInTheAir); none where it sees the sky.
+  std::optional<glm::vec3> metAbove(glm::vec3 q, glm::vec3 air) const {
     const glm::vec2 walls = shader::poolWallDistances(pool_, q, air);
-    const float distance = std::min(walls.x, walls.y);
-    if (q.y + distance * air.y >= pool_.box.y) return std::nullopt;
-    return dryWall(q, air, distance, shader::poolWallNormal(walls, air));
+    const float wall = std::min(walls.x, walls.y);
+    const bool belowTheRim = q.y + wall * air.y < pool_.box.y;
+    const BoxHit box = nearestBox(q, air, belowTheRim ? wall : 1e30f);
+    if (box.index >= 0) return boxInTheAir(box);
+    if (belowTheRim) return dryWall(q, air, wall, shader::poolWallNormal(walls, air));
+    return std::nullopt;
+  }
+
+  // The nearest of the boxes along o + s d short of `limit`: index -1 where
+  // none is met.
+  struct BoxHit {
+    int index = -1;
+    float distance = 0.0f;
+    glm::vec3 normal{0.0f};  // outward
+  };
+  BoxHit nearestBox(glm::vec3 o, glm::vec3 d, float limit) const {
+    BoxHit nearest;
+    for (size_t k = 0; k < boxes_.size(); ++k) {
+      const glm::vec4 hit = shader::rayBox(o, d, boxes_[k].center, boxes_[k].halfSize);
+      if (hit.x > 0.0f && hit.x < limit) {
+        limit = hit.x;
+        nearest = {int(k), hit.x, glm::vec3(hit.y, hit.z, hit.w)};
+      }
+    }
+    return nearest;
+  }
+
+  // The radiance of a box in the air: its albedo over pi times the sun on
+  // its face and the open sky's irradiance there (boxFaceLight_), its
+  // shadows and the ground's light left out.
+  glm::vec3 boxInTheAir(const BoxHit& hit) const {
+    const shader::BoxParams& b = boxes_[size_t(hit.index)];
+    const std::array<glm::vec3, 6> normals = boxFaceNormals(b);
+    size_t face = 0;
+    for (size_t f = 1; f < normals.size(); ++f)
+      if (glm::dot(hit.normal, normals[f]) > glm::dot(hit.normal, normals[face])) face = f;
+    glm::vec3 e = boxFaceLight_[size_t(hit.index) * 6 + face];
+    if (sun_.direction.y > 0.0f) e += sun_.irradiance * std::max(glm::dot(hit.normal, sun_.direction), 0.0f);
+    return glm::vec3(b.albedo) / glm::pi<float>() * e;
+  }
+
+  // The outward normals of a box's six faces.
+  static std::array<glm::vec3, 6> boxFaceNormals(const shader::BoxParams& b) {
+    const glm::vec3 x = shader::boxAxisX(b.center.w), z = shader::boxAxisZ(b.center.w), y(0.0f, 1.0f, 0.0f);
+    return {x, -x, y, -y, z, -z};
+  }
+
+  // The sky's irradiance on a surface of normal n open to the whole sky (its
+  // bins'), nothing from below the horizon.
+  glm::vec3 openIrradiance(glm::vec3 n) const {
+    glm::vec3 sum(0.0f);
+    for (const SkyBins::Bin& bin : skyBins_.bins()) sum += bin.light * std::max(glm::dot(n, bin.direction), 0.0f);
+    return sum;
   }
 
   // The radiance reaching o along -d from a ray in the air inside the pool
@@ -319,14 +381,16 @@ class PoolLightBake {
       return float(state >> 8) * (1.0f / 16777216.0f);
     };
     for (uint32_t bounce = 0; bounce <= kBounces;) {
-      const shader::PoolHit hit = shader::tracePool(pool_, o, d, vertices_);
+      shader::PoolHit hit = shader::tracePool(pool_, o, d, vertices_);
+      const BoxHit box = nearestBox(o, d, hit.distance);
+      if (box.index >= 0) hit = {box.distance, o + box.distance * d, box.normal, false};
       const float up = toSurface(o, d);
       if (up < hit.distance) {
         underside(o, d, up, throughput, radiance, bounce > 0);
       } else {
         throughput *= glm::exp(-absorption_ * hit.distance);
         const glm::vec3 p = hit.position + kOffset * hit.normal;
-        throughput *= albedo(hit, p);
+        throughput *= box.index >= 0 ? glm::vec3(boxes_[size_t(box.index)].albedo) : albedo(hit, p);
         if (sunReaches(p)) radiance += throughput / glm::pi<float>() * sunThroughFlatWater(p, hit.normal);
         d = cosineAbout(hit.normal, glm::vec2(uniform(), uniform()));
         o = p;
@@ -344,6 +408,8 @@ class PoolLightBake {
   // The solid angle of each of skyBins_'s bins (equal by construction).
   float binSolidAngle_ = 2.0f * glm::pi<float>() / float(kSkyBands * kSkyAzimuths);
   PoolLightSun sun_;
+  std::vector<shader::BoxParams> boxes_;
+  std::vector<glm::vec3> boxFaceLight_;  // openIrradiance of each box's faces (boxFaceNormals' order)
   shader::FrameUniforms frame_{};
   float ior_ = 1.0f, level_ = 0.0f;
   glm::vec3 absorption_{0.0f};
@@ -402,14 +468,14 @@ void inParallel(uint32_t count, const Work& work) {
 }  // namespace
 
 PoolLight bakePoolLight(const shader::PoolParams& pool, std::vector<glm::vec4> floorVertices, const SkyRadiance& sky,
-                        const PoolLightSun& sun) {
+                        const PoolLightSun& sun, const std::vector<shader::BoxParams>& boxes) {
   PoolLight light;
   light.floorAndLight = std::move(floorVertices);
   const size_t first = light.floorAndLight.size();
   // The light's room made first: the bake reads the floor from this buffer.
   light.floorAndLight.resize(first + TP_POOL_LIGHT_SIZE);
   glm::vec4* texels = light.floorAndLight.data() + first;
-  const PoolLightBake bake(pool, light.floorAndLight, sky, sun);
+  const PoolLightBake bake(pool, light.floorAndLight, sky, sun, boxes);
   // The walls above the water first: the texels under it see them through
   // the surface. The dry band sees the pool's light (its own paths), and its
   // walls one another: a pass without their light, then one with the
