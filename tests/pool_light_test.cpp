@@ -48,7 +48,8 @@ scene::Scene widePool(float rho, float absorption) {
 float middleOfTheFloor(const scene::Scene& s, float sky = 1.0f, render::PoolLightSun sun = {}) {
   const render::PoolModel model = render::poolModel(s);
   const std::vector<glm::vec4> all =
-      render::bakePoolLight(model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, {})
+      render::bakePoolLight(
+          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, render::opaqueBoxes(s))
           .floorAndLight;
   const glm::vec4* light = all.data() + model.floorVertices.size();
   constexpr int kFrom = TP_POOL_LIGHT_FLOOR / 4, kTo = 3 * TP_POOL_LIGHT_FLOOR / 4;
@@ -91,7 +92,8 @@ double undersideReflectance(double ior) {
 double middleOfTheDryBand(const scene::Scene& s, float sky, render::PoolLightSun sun = {}, int wall = -1) {
   const render::PoolModel model = render::poolModel(s);
   const std::vector<glm::vec4> all =
-      render::bakePoolLight(model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, {})
+      render::bakePoolLight(
+          model.params, model.floorVertices, [&](glm::vec3) { return glm::vec3(sky); }, sun, render::opaqueBoxes(s))
           .floorAndLight;
   const glm::vec4* dry = all.data() + model.floorVertices.size() + TP_POOL_LIGHT_DRY_START;
   double sum = 0.0;
@@ -135,6 +137,25 @@ TEST(PoolLight, AWallAboveTheWaterSeesTheSkyAndTheWatersMirror) {
   const double baked = middleOfTheDryBand(s, 1.0f);
   std::printf("the sky on the dry band: baked %.5f, closed form %.5f, ratio %.5f\n", baked, expected, baked / expected);
   EXPECT_NEAR(baked / expected, 1.0, 0.005);
+}
+
+// The same walls under a lid laid on the rim, a uniform sky and a sun:
+// the lid's underside, which neither lights, hides the sky over the rim,
+// the sky and the sun the water mirrors, and the sun on the other walls.
+// The walls above the water are dark.
+TEST(PoolLight, ALidOnTheRimLeavesTheWallsAboveTheWaterDark) {
+  scene::Scene s = widePool(0.0f, 0.0f);
+  s.pool.wallAlbedo = glm::vec3(0.5f);
+  const render::PoolLightSun sun{glm::normalize(glm::vec3(0.6f, 0.5f, 0.2f)), glm::vec3(3.0f)};
+  const double open = middleOfTheDryBand(s, 1.0f, sun);
+  scene::Box lid;
+  lid.size = glm::vec3(2000.0f, 0.2f, 2000.0f);
+  lid.center = glm::vec3(0.0f, s.ground.height + 0.101f, 0.0f);
+  s.boxes.push_back(lid);
+  const double covered = middleOfTheDryBand(s, 1.0f, sun);
+  std::printf("the dry band: %.5f open, %.3g under the lid\n", open, covered);
+  EXPECT_GT(open, 1.0);
+  EXPECT_EQ(covered, 0.0);
 }
 
 // The sun mirrored by flat water onto the wall at -x (inward normal +x):

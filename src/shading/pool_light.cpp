@@ -92,7 +92,7 @@ class PoolLightBake {
     p += kOffset * n;
     glm::vec3 sum(0.0f);
     for (const SkyBins::Bin& bin : skyBins_.bins()) {
-      if (glm::dot(n, bin.direction) > 0.0f && clearsTheRim(p, bin.direction))
+      if (glm::dot(n, bin.direction) > 0.0f && seesTheSky(p, bin.direction))
         sum += bin.light * glm::dot(n, bin.direction);
       sum += bin.light * mirrored(p, n, bin.direction);
     }
@@ -146,6 +146,12 @@ class PoolLightBake {
     return q.y + std::min(walls.x, walls.y) * air.y >= pool_.box.y;
   }
 
+  // Whether a line in the air from q along `air` (upwards) reaches the sky:
+  // it clears the rim and meets no box.
+  bool seesTheSky(glm::vec3 q, glm::vec3 air) const {
+    return clearsTheRim(q, air) && nearestBox(q, air, 1e30f).index < 0;
+  }
+
   // Whether the sun reaches p under the water through the flat surface:
   // its refracted line up to the surface meets no wall, nor does its line
   // on in the air.
@@ -165,7 +171,7 @@ class PoolLightBake {
     const float toSurface = reachesTheSurface(p, up);
     if (toSurface < 0.0f) return -1.0f;
     const glm::vec3 q = p + toSurface * up;
-    if (!clearsTheRim(q, air) || nearestBox(q, air, 1e30f).index >= 0) return -1.0f;
+    if (!seesTheSky(q, air)) return -1.0f;
     return toSurface;
   }
 
@@ -218,7 +224,8 @@ class PoolLightBake {
     if (facing <= 0.0f || toLight.y <= 0.0f) return 0.0f;
     const float s = (p.y - level_) / toLight.y;
     const glm::vec2 walls = shader::poolWallDistances(pool_, p, down);
-    if (std::min(walls.x, walls.y) < s || !clearsTheRim(p + s * down, toLight)) return 0.0f;
+    if (std::min(walls.x, walls.y) < s || nearestBox(p, down, s).index >= 0 || !seesTheSky(p + s * down, toLight))
+      return 0.0f;
     return shader::fresnelDielectric(toLight.y, 1.0f, ior_) * facing;
   }
 
@@ -229,7 +236,7 @@ class PoolLightBake {
   glm::vec3 dryWall(glm::vec3 o, glm::vec3 d, float distance, glm::vec3 normal) const {
     const glm::vec3 w = o + distance * d + kOffset * normal;
     glm::vec3 e(0.0f);
-    if (glm::dot(normal, sun_.direction) > 0.0f && clearsTheRim(w, sun_.direction))
+    if (glm::dot(normal, sun_.direction) > 0.0f && seesTheSky(w, sun_.direction))
       e += sun_.irradiance * glm::dot(normal, sun_.direction);
     e += shader::poolLightDryAt(pool_, w, normal, vertices_);
     return albedo(shader::PoolHit{distance, w, normal, false}, w) / glm::pi<float>() * e;
@@ -296,8 +303,9 @@ class PoolLightBake {
   }
 
   // The radiance reaching o along -d from a ray in the air inside the pool
-  // (d's first leg from the dry band): a wall above the water (dryWall);
-  // the water, whose mirror is followed to a wall above it and whose
+  // (d's first leg from the dry band): a wall above the water (dryWall) or
+  // a box (boxInTheAir); the water, whose mirror is followed to a wall
+  // above it or a box and whose
   // refraction brings the pool's light out (1 / n^2 of it past Fresnel's
   // transmission); the sky is the bins'.
   glm::vec3 fromTheAir(glm::vec3 o, glm::vec3 d, uint32_t seed) const {
@@ -306,9 +314,14 @@ class PoolLightBake {
       const glm::vec2 walls = shader::poolWallDistances(pool_, o, d);
       const float sWall = std::min(walls.x, walls.y);
       const float sWater = d.y < 0.0f ? (o.y - level_) / -d.y : 1e30f;
-      if (sWall < sWater) {
-        if (o.y + sWall * d.y < pool_.box.y)
-          radiance += weight * dryWall(o, d, sWall, shader::poolWallNormal(walls, d));
+      const bool wallFirst = sWall < sWater, overTheRim = wallFirst && o.y + sWall * d.y >= pool_.box.y;
+      const BoxHit box = nearestBox(o, d, overTheRim ? 1e30f : std::min(sWall, sWater));
+      if (box.index >= 0) {
+        radiance += weight * boxInTheAir(box);
+        break;
+      }
+      if (wallFirst) {
+        if (!overTheRim) radiance += weight * dryWall(o, d, sWall, shader::poolWallNormal(walls, d));
         break;
       }
       if (leg == 1) break;  // mirrored twice: the floor's light is the first mirror's

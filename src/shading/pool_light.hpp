@@ -31,7 +31,8 @@ struct PoolLight {
   // rim and the sky and the sun the flat water mirrors, summed over the
   // sky's bins, and by a fixed set of cosine-weighted directions the pool's
   // light through the surface and the other walls' (the sun's, and the dry
-  // band's of a first pass); they do not see the boxes. Then the light
+  // band's of a first pass); a box hides the sky and the sun from them and
+  // brings its own light where their lines meet it. Then the light
   // around at each of TP_POOL_AROUND_POINTS points in the water, 9 SH9
   // coefficients each: the radiance reaching the point from every
   // direction, each direction's ray meeting the sky through the surface (or
