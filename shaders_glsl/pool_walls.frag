@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The pool's walls (plain or brick, shared/pool.h), Lambertian (shared/shading.h)
-// with their glossy lobe (shared/glossy.h), through the water when the camera is under it.
+// with their glossy lobe (shared/glossy.h) lit by the pool's probe above the water,
+// through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/water.h"
 #include "lib/gbuffer.glsl"
@@ -19,6 +20,7 @@ layout(binding = 6) readonly buffer WaterCells { WaterCell waterCells[]; };  // 
 #include "lib/sun_through_waves.glsl"  // reads `waterCells` in place
 layout(binding = 3) uniform Medium { CameraMedium medium; };
 layout(binding = 4) uniform sampler2D glossyMap;
+layout(binding = 7) uniform sampler2D poolProbe;  // the pool's probe (render/glossy_probes), or the sky's map
 layout(binding = 5) readonly buffer FloorVertices { vec4 floorVertices[]; };  // and the baked light
 #include "shared/pool_light.h"
 
@@ -31,7 +33,8 @@ void main() {
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   const vec3 albedo = poolWallAlbedo(pool, poolWallCoordinates(pool, worldPosition, n), footprint);
   const vec3 diffuse = albedo / kPi * poolIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
-  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, pool.wallGloss.xy) * toCamera +
+  color = vec4(glossyWallRadiance(poolProbe, glossyMap, pool, worldPosition, diffuse, view, n, pool.wallGloss.xy) *
+                       toCamera +
                    viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   // AO scales the Lambertian part's light but the sun's.

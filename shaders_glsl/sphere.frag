@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// A Lambertian sphere (shared/shading.h) with its glossy lobe (shared/glossy.h),
-// through the water when the camera is under it.
+// A Lambertian sphere (shared/shading.h) with its glossy lobe (shared/glossy.h)
+// lit by its probe, through the water when the camera is under it.
 #include "shared/shading.h"
 #include "shared/water.h"
 #include "shared/objects.h"
@@ -15,7 +15,7 @@ layout(binding = 0) uniform Frame { FrameUniforms frame; };
 #include "shared/sun_shadow.h"  // reads `frame` in place
 #include "shared/water_scattering.h"  // reads `frame` in place
 layout(binding = 1) uniform Medium { CameraMedium medium; };
-layout(binding = 2) uniform sampler2D glossyMap;
+layout(binding = 2) uniform sampler2D glossyMap;  // the sphere's probe (render/glossy_probes), or the sky's
 layout(binding = 3) uniform Pool { PoolParams pool; };
 layout(binding = 4) uniform sampler2D caustics;  // the sun through the waves, for the parts under the water
 layout(binding = 5) readonly buffer WaterCells { WaterCell waterCells[]; };  // the simulation's state
@@ -31,7 +31,9 @@ void main() {
   const float caustic = sunThroughWaves(caustics, pool, frame.sunDirection.xyz, worldPosition);
   const vec3 diffuse =
       params.albedo.rgb / kPi * objectIrradiance(pool, frame, worldPosition, n, frameSunShare(worldPosition) * caustic);
-  color = vec4(glossyRadiance(glossyMap, diffuse, view, n, params.material.xy) * toCamera +
+  color = vec4(glossyProbeRadiance(glossyMap, pool, params.sphere, worldPosition, diffuse, view, n,
+                                   params.material.xy) *
+                       toCamera +
                    viewInScatter(medium, poolLightAround(pool, 0.5 * (frame.cameraPosition.xyz + worldPosition)), worldPosition),
                1.0);
   // AO scales the Lambertian part's light but the sun's.

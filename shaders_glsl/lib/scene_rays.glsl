@@ -199,9 +199,10 @@ vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
   return vec2(abs(n.x) > 0.5 ? spread.z : spread.x, spread.y);
 }
 
-#ifdef TP_GLASS
+#if defined(TP_GLASS) || defined(TP_BACKDROP)
 // What a glass sphere or box met by the water's rays shows along one of its exact
-// paths: the backdrop, the scene without its objects, in straight-line code
+// paths, and what a glossy sphere's probe sees from its centre
+// (glossy_probe.comp, with TP_BACKDROP): the backdrop, the scene without its objects, in straight-line code
 // (a shader cannot recurse into the casts that met the glass). Lavapipe runs
 // every branch of the water's shader for every pixel (masked) and every loop
 // at least once, so what is written here costs the whole water surface. It
@@ -219,6 +220,18 @@ vec2 hitFootprint(RayDifferential rd, vec3 dir, float s, vec3 n) {
 // filtered, it came no nearer the reference
 // (GlassTest.GlassShowsInTheWatersReflectionsAndRefractions against 256
 // rays a pixel: 0.0365 either way) and cost every water pixel.
+// The sky where a backdrop's ray ends: at level 0 or, for a probe
+// (TP_BACKDROP), whose texels each cover several of the sky's, their mean
+// over the ray's footprint: a point would miss the sun's disc, far smaller
+// than a probe's texel.
+vec3 backdropSky(vec3 r, RayDifferential rd) {
+#if defined(TP_BACKDROP)
+  return skyFiltered(r, rd);
+#else
+  return sky(r);
+#endif
+}
+
 vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
   vec3 sum = vec3(0.0), weight = vec3(1.0);
   // What the ray ends on, shaded once below: the ground, a wall, the floor, or the sky.
@@ -229,7 +242,7 @@ vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
     if (end.met == kMetWater) {
       const FlatWaterSplit split = flatWaterSplit(r, false);
       const vec3 up = vec3(0.0, 1.0, 0.0);
-      sum = split.reflectance * sky(split.reflected);
+      sum = split.reflectance * backdropSky(split.reflected, rd);
       weight = vec3(1.0 - split.reflectance) / (pool.water.y * pool.water.y);  // into the water: 1 / n^2
       rd = refractedDifferential(transferredDifferential(rd, r, end.distance, up), r, split.refracted, up,
                                  1.0 / pool.water.y);
@@ -265,11 +278,14 @@ vec3 backdrop(vec3 p, vec3 r, RayDifferential rd) {
   // As the water's and the glass's own rays shade what they meet, shadows
   // and caustics included.
   const float sunShare = water ? sunUnderWater(q) : frameSunShare(q);
-  const vec3 seen = end.met == kMetNothing ? sky(r)
+  const vec3 seen = end.met == kMetNothing ? backdropSky(r, rd)
                     : water                ? poolSurfaceSeen(poolMet, r, footprint, sunShare)
                                            : airSurfaceSeen(end, q, r, footprint, sunShare);
   return sum + weight * seen * exp(-pool.extinction.rgb * travel);
 }
+#endif
+
+#ifdef TP_GLASS
 
 // A glass sphere or box met at p along `dir`: the backdrop along its two
 // exact paths, one after the other, each with its footprint (rd: the ray's

@@ -6,8 +6,10 @@
 // A glossy surface leaves (1 - s) of the Lambertian radiance and adds s G(r):
 // the sky convolved with the normalised Phong lobe (e + 1) / 2pi max(0, r.w)^e
 // about the mirror direction r, which integrates to 1 over the sphere, so a
-// constant sky L gives G = L. Only the sky is reflected (no other geometry),
-// the lobe is not clipped by the surface, and there is no Fresnel factor.
+// constant sky L gives G = L. A glossy sphere reflects its probe, the
+// scene around it seen from its centre, and the walls above the water the
+// pool's probe (render/glossy_probes); the walls under the water the sky. The lobe is not clipped by the surface, and there
+// is no Fresnel factor.
 //
 // The prefiltered map is an equirectangular mip chain: level k, W_k = W_0 / 2^k
 // texels wide, holds G for the exponent whose lobe is kGlossyTexelsPerLobe of
@@ -29,6 +31,9 @@ const float kGlossyTexelsPerLobe = 2.0f;
 const uint kGlossyMinWidth = 16u;
 // The finest level's width at most (512: e_0 = 1660, a lobe of 1.4 degrees).
 const uint kGlossyMaxWidth = 512u;
+// How far over the water a probe's eye stands when its sphere's centre is
+// under it (glossyProbeEye), in metres: over the flat water at its rest level.
+const float kGlossyProbeLift = 1e-3f;
 // Roughness is clamped to this before it becomes an exponent (2 / r^4 - 1
 // would be infinite at 0); any roughness below the finest level's reads level 0.
 const float kGlossyMinRoughness = 0.01f;
@@ -39,6 +44,58 @@ struct GlossyParams {
   uvec4 samples;  // x: drawn from the environment, y: drawn from the lobe; z: the level
   vec4 lobe;      // x: the level's exponent
 };
+
+// The push constants of glossy_probe.comp, one dispatch per glossy sphere.
+struct GlossyProbeParams {
+  vec4 center;  // xyz: the sphere's centre, where its probe looks out from
+};
+
+// Where a glossy sphere's probe looks out from: its centre or, for a sphere
+// through the water's rest level waterY with its centre under it, just
+// above the water, so that the half in the air, the half a camera over the
+// water sees, reflects what is over the water (from under it the sky comes
+// through Snell's window). Without water, waterY is below everything.
+TP_INLINE vec3 glossyProbeEye(vec3 center, float radius, float waterY) {
+  if (center.y < waterY && center.y + radius > waterY) return vec3(center.x, waterY + kGlossyProbeLift, center.z);
+  return center;
+}
+
+// The direction from a glossy sphere's probe's eye (glossyProbeEye) in which
+// the probe holds what the mirror ray from p on its surface along unit r meets: where r goes up,
+// r (the sky and what stands over the ground are far, seen alike from the
+// centre); where it goes down, the direction to where it meets the ground's
+// plane at groundY or, through the pool's opening (holeHalf, 0 for none),
+// the water's rest level at waterY. Under the water, r.
+TP_INLINE vec3 glossyProbeDirection(vec3 center, vec3 p, vec3 r, float groundY, float holeHalf, float waterY) {
+  if (r.y >= 0.0f || (holeHalf > 0.0f && p.y <= waterY)) return r;
+  float plane = groundY;
+  if (p.y <= groundY) {
+    plane = waterY;
+  } else {
+    vec3 q = p + ((groundY - p.y) / r.y) * r;
+    if (max(abs(q.x), abs(q.z)) < holeHalf) plane = waterY;
+  }
+  return normalize(p + ((plane - p.y) / r.y) * r - center);
+}
+
+// Where the pool's probe looks out from: the pool's centre, halfway between
+// the water's rest level and the rim, among the walls above the water.
+TP_INLINE vec3 poolProbeCenter(float waterY, float rimY) { return vec3(0.0f, 0.5f * (waterY + rimY), 0.0f); }
+
+// The direction from the pool's probe at `center` in which it holds what the
+// mirror ray from p on a wall above the water along unit r meets: a wall
+// across the pool (|x| or |z| at holeHalf) or the water at its rest level
+// waterY; r where the ray leaves over the rim at rimY (the sky and the
+// ground beyond are far, seen alike from the centre).
+TP_INLINE vec3 poolProbeDirection(vec3 center, vec3 p, vec3 r, float holeHalf, float waterY, float rimY) {
+  float s = 1e30f;
+  if (abs(r.x) > 1e-6f) s = min(s, (sign(r.x) * holeHalf - p.x) / r.x);
+  if (abs(r.z) > 1e-6f) s = min(s, (sign(r.z) * holeHalf - p.z) / r.z);
+  if (r.y < 0.0f) s = min(s, (waterY - p.y) / r.y);
+  vec3 q = p + s * r;
+  if (s <= 0.0f || q.y > rimY) return r;
+  return normalize(q - center);
+}
 
 // The Phong exponent of a roughness in [0, 1]: e = 2 / r^4 - 1 (1, a cosine
 // lobe, at roughness 1; the Beckmann-Phong correspondence with alpha = r^2,
@@ -88,6 +145,7 @@ TP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(tp::shader::GlossyParams) == 48);
+static_assert(sizeof(tp::shader::GlossyProbeParams) == 16);
 #endif
 
 #endif

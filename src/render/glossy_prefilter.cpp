@@ -55,9 +55,10 @@ void GlossyPrefilter::record(const vk::raii::CommandBuffer& cmd, gpu::Descriptor
   }
 }
 
-void GlossyPrefilter::declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map) {
+void GlossyPrefilter::declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map,
+                              const PassKind& kind) {
   // The prefilter binds its own sets, level by level (record()).
-  graph.pass(passes::kGlossyPrefilter,
+  graph.pass(kind,
              [this, sky, sampler, map](PassBuilder& pass) {
                const gpu::Image& source = pass.attach(sky, Use::ComputeSample);
                pass.attach(map, Use::ComputeWrite);

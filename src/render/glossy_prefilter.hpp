@@ -8,6 +8,7 @@
 #include "gpu/pipeline.hpp"
 #include "graph/frame_graph.hpp"
 #include "render/env_prefilter.hpp"
+#include "render/pass_kinds.hpp"
 
 namespace tp::render {
 
@@ -40,9 +41,11 @@ class GlossyPrefilter {
   // (in the general layout): the commands alone, the caller's barriers around them.
   void record(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& descriptors, const gpu::Image& sky,
               vk::Sampler sampler);
-  // The cached pass "glossy prefilter": it reads the sky and writes the map,
-  // so it runs on the first frame and again only when the sky changes.
-  void declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map);
+  // The cached pass "glossy prefilter" (or `kind`): it reads the sky and
+  // writes the map, so it runs on the first frame and again only when the
+  // sky changes.
+  void declare(FrameGraph& graph, const GraphImage& sky, vk::Sampler sampler, const GraphImage& map,
+               const PassKind& kind = passes::kGlossyPrefilter);
 
   // Outside a frame (tests, bench): prefilters `sky` in a submission of its
   // own and reads every level back (RGBA, rows top to bottom); `milliseconds`

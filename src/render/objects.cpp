@@ -18,35 +18,46 @@ Objects::Objects(const gpu::Context& ctx, FragmentNeeds needs, const PoolDraw& p
       waterCells_(pool.waterCells) {}
 
 void Objects::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-                      const ObjectsInView& inView) const {
+                      const ObjectsInView& inView, std::vector<GraphImage> probeMaps) const {
   graph.pass(passes::kObjects,
-             [this, targets, in, &inView](PassBuilder& pass) {
+             [this, targets, in, &inView, probeMaps](PassBuilder& pass) {
                attachSurfaces(pass, targets, false);
-               Bindings& set = pass.bindings()
-                                   .uniformBuffer(0, in.uniforms, Use::HostData)
-                                   .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
-                                   .uniformBuffer(1, in.medium, Use::FragmentUniformRead)
-                                   .sampledImage(2, in.glossy, in.equirect, Use::FragmentSample)
-                                   .constantBuffer(3, *poolUniforms_)
-                                   .sampledImage(4, caustics_, in.clamp, Use::FragmentSample)
-                                   .storageBuffer(5, waterCells_, Use::FragmentStorageRead)
-                                   .constantStorageBuffer(6, *floorVertices_);
-               return [this, targets, &set, &inView](PassContext& pc) {
+               // One set with the sky's glossy map, one with each probe.
+               auto withGlossy = [&](const GraphImage& glossy) -> Bindings& {
+                 return pass.bindings()
+                     .uniformBuffer(0, in.uniforms, Use::HostData)
+                     .storageBuffer(TP_GLASS_TABLES_BINDING, in.glassTables, Use::HostData)
+                     .uniformBuffer(1, in.medium, Use::FragmentUniformRead)
+                     .sampledImage(2, glossy, in.equirect, Use::FragmentSample)
+                     .constantBuffer(3, *poolUniforms_)
+                     .sampledImage(4, caustics_, in.clamp, Use::FragmentSample)
+                     .storageBuffer(5, waterCells_, Use::FragmentStorageRead)
+                     .constantStorageBuffer(6, *floorVertices_);
+               };
+               Bindings& set = withGlossy(in.glossy);
+               std::vector<const Bindings*> probeSets;
+               for (const GraphImage& map : probeMaps) probeSets.push_back(&withGlossy(map));
+               return [this, targets, &set, probeSets, &inView](PassContext& pc) {
                  drawSurfaces(pc.cmd, targets, false,
-                              [&] { drawObjects(pc.cmd, pc.descriptors, spheres_, boxes_, set, inView); });
+                              [&] { drawObjects(pc.cmd, pc.descriptors, spheres_, boxes_, set, inView, probeSets); });
                };
              },
              {.cached = false, .runIf = [&inView] { return !inView.empty(); }});
 }
 
 void drawObjects(const vk::raii::CommandBuffer& cmd, gpu::DescriptorArena& arena, const gpu::Pipeline& spheres,
-                 const gpu::Pipeline& boxes, const Bindings& set, const ObjectsInView& inView) {
+                 const gpu::Pipeline& boxes, const Bindings& set, const ObjectsInView& inView,
+                 std::span<const Bindings* const> probeSets) {
   if (!inView.spheres.empty()) {
     cmd.bindPipeline(spheres.bindPoint, *spheres.pipeline);
-    set.bind(cmd, spheres, arena);
-    for (const auto& sphere : inView.spheres) {
-      gpu::bindPipeline(cmd, spheres, sphere);
-      gpu::draw(cmd, sphereVertexCount(sphere.tessellation));
+    const Bindings* bound = nullptr;
+    for (size_t k = 0; k < inView.spheres.size(); ++k) {
+      const uint32_t probe = k < inView.sphereProbes.size() ? inView.sphereProbes[k] : kNoGlossyProbe;
+      const Bindings* wanted = probe < probeSets.size() ? probeSets[probe] : &set;
+      if (wanted != bound) wanted->bind(cmd, spheres, arena);
+      bound = wanted;
+      gpu::bindPipeline(cmd, spheres, inView.spheres[k]);
+      gpu::draw(cmd, sphereVertexCount(inView.spheres[k].tessellation));
     }
   }
   if (!inView.boxes.empty()) {

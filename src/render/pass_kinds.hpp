@@ -9,6 +9,8 @@ inline constexpr PassKind kCameraMedium{"camera medium"};
 inline constexpr PassKind kCaustics{"caustics"};
 inline constexpr PassKind kSky{"sky"};
 inline constexpr PassKind kGlossyPrefilter{"glossy prefilter"};
+inline constexpr PassKind kGlossyProbes{"glossy probes"};
+inline constexpr PassKind kGlossyProbePrefilter{"glossy probe prefilter"};
 inline constexpr PassKind kGround{"ground"};
 inline constexpr PassKind kGroundCopy{"ground copy"};
 inline constexpr PassKind kPool{"pool"};

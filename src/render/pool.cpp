@@ -119,8 +119,8 @@ void Pool::declareCaustics(FrameGraph& graph, const WaterDraw& water, const Fram
 }
 
 void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-                   std::function<Drawn()> drawn) const {
-  graph.pass(passes::kPool, [this, targets, in, drawn](PassBuilder& pass) {
+                   std::function<Drawn()> drawn, GraphImage wallProbe) const {
+  graph.pass(passes::kPool, [this, targets, in, drawn, wallProbe](PassBuilder& pass) {
     attachSurfaces(pass, targets, false);
     Bindings& set = pass.bindings()
                         .uniformBuffer(0, in.uniforms, Use::HostData)
@@ -129,6 +129,7 @@ void Pool::declare(FrameGraph& graph, const SurfaceTargets& targets, const Frame
                         .sampledImage(2, draw_.caustics, in.clamp, Use::FragmentSample)
                         .uniformBuffer(3, in.medium, Use::FragmentUniformRead)
                         .sampledImage(4, in.glossy, in.equirect, Use::FragmentSample)
+                        .sampledImage(7, wallProbe ? wallProbe : in.glossy, in.equirect, Use::FragmentSample)
                         .constantStorageBuffer(5, floorVertices_)
                         .storageBuffer(6, draw_.waterCells, Use::FragmentStorageRead);
     return [this, targets, &set, drawn](PassContext& pc) {

@@ -66,8 +66,10 @@ class Pool {
     std::optional<float> wallsCut;
   };
   // `drawn` is asked as each frame records.
-  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in,
-               std::function<Drawn()> drawn) const;
+  // `wallProbe`: what the glossy walls above the water reflect, the pool's
+  // probe (render/glossy_probes), or none: the sky's glossy map.
+  void declare(FrameGraph& graph, const SurfaceTargets& targets, const FrameInputs& in, std::function<Drawn()> drawn,
+               GraphImage wallProbe = {}) const;
   // The floor's highest point, in metres.
   float floorTop() const { return floorTop_; }
   // The step the floor grid is drawn at from the next frame on

@@ -18,6 +18,7 @@
 #include "render/frame_targets.hpp"
 #include "render/glass.hpp"
 #include "render/glossy_environment.hpp"
+#include "render/glossy_probes.hpp"
 #include "render/ground.hpp"
 #include "render/morphological_aa.hpp"
 #include "render/objects.hpp"
@@ -78,6 +79,7 @@ struct Renderer::Resources {
         needs(surfaceNeeds(scene, targets.surfaces().gbuffer(), options.skipping)),
         sky(ctx, graph, scene, targets.surfaces().gbuffer()),
         glossy(ctx, graph, scene, *sky.image().image),
+        glossyProbes(ctx, graph, scene),
         medium(ctx, graph, scene.water.enabled),
         ground(ctx, graph, scene, needs, frame, targets.surfaces().gbuffer()) {
     graph.setCaching(skipping);
@@ -97,22 +99,27 @@ struct Renderer::Resources {
         },
         [this, in](PassBuilder& pass) { return sky.background(pass, in); },
         stillInPart ? std::function<std::optional<PixelRect>()>([this] { return groundCopy; }) : nullptr);
-    if (pool) {
-      pool->declare(graph, surfaces, in, [this] {
-        if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
-          return Pool::Drawn{Pool::Floor::Lit, std::nullopt, std::nullopt};
-        // Nothing but the SSAO reads the depth and normals the water draws over.
-        const float below = seenOnlyThroughWaterBelow(live, water->largestHeight());
-        if (aoMakesItsInputs()) return Pool::Drawn{Pool::Floor::DepthAndNormal, std::nullopt, below};
-        return Pool::Drawn{Pool::Floor::None, below, std::nullopt};
-      });
-    }
     if (!pool && (!scene.spheres.empty() || !scene.boxes.empty()))
       noPool.emplace(ctx, graph, objectUniforms, ground.params());
     const PoolDraw* poolDraw = pool ? &pool->draw() : noPool ? &noPool->draw() : nullptr;
+    // The glossy spheres' and walls' probes, before what reflects them.
+    if (poolDraw) glossyProbes.declare(graph, in, *poolDraw);
+    if (pool) {
+      pool->declare(
+          graph, surfaces, in,
+          [this] {
+            if (!skipping || !floorSeenOnlyThroughWater(live, water->largestHeight(), pool->floorTop()))
+              return Pool::Drawn{Pool::Floor::Lit, std::nullopt, std::nullopt};
+            // Nothing but the SSAO reads the depth and normals the water draws over.
+            const float below = seenOnlyThroughWaterBelow(live, water->largestHeight());
+            if (aoMakesItsInputs()) return Pool::Drawn{Pool::Floor::DepthAndNormal, std::nullopt, below};
+            return Pool::Drawn{Pool::Floor::None, below, std::nullopt};
+          },
+          glossyProbes.poolMap());
+    }
     if (!scene.spheres.empty() || !scene.boxes.empty()) {
       objects.emplace(ctx, needs, *poolDraw);
-      objects->declare(graph, surfaces, in, opaqueInView);
+      objects->declare(graph, surfaces, in, opaqueInView, glossyProbes.maps());
     }
     // AO of the opaque surfaces, before the water: the apparent-depth mode's
     // copy of the pool then has it too. Applied here, or by the resolve.
@@ -250,12 +257,14 @@ struct Renderer::Resources {
     const shader::SceneObjects casts =
         sceneObjects(placed, skipping && water ? water->top() : std::numeric_limits<float>::infinity());
     std::memcpy(objectUniforms.mapped, &casts, sizeof(casts));
-    for (const auto& sphere : placed.spheres) {
+    for (size_t k = 0; k < placed.spheres.size(); ++k) {
+      const scene::Sphere& sphere = placed.spheres[k];
       if (skipping && !frustum.mayShow(sphere.center, sphere.radius)) continue;
       if (scene::isGlass(sphere)) {
         glassInView.push_back(glassSphereParams(sphere, glassSteps, sphereSlot(casts, sphere)));
       } else {
         opaqueInView.spheres.push_back(sphereParams(sphere));
+        opaqueInView.sphereProbes.push_back(glossyProbes.probeOf(k));
       }
       aovInView.spheres.push_back(sphereParams(sphere));
     }
@@ -346,6 +355,7 @@ struct Renderer::Resources {
   FragmentNeeds needs;  // what the surfaces' shaders need of the scene
   Sky sky;
   GlossyEnvironment glossy;
+  GlossyProbes glossyProbes;  // none without glossy spheres or walls
   CameraMedium medium;
   Ground ground;
   // With water: the simulation, the surface, the pool.
@@ -512,6 +522,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
   }
   // Spheres with a path are where the path puts them at this frame's time.
   res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
+  if (!res_->glossyProbes.empty()) res_->glossyProbes.update(res_->graph, uniforms, scene::sceneAt(scene_, time));
   res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->pool ? res_->pool->floorStep() : 1u);
   res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
