@@ -8,8 +8,8 @@
 // about the mirror direction r, which integrates to 1 over the sphere, so a
 // constant sky L gives G = L. A glossy sphere reflects its probe, the
 // scene around it seen from its centre, and the walls above the water the
-// pool's probe (render/glossy_probes); the walls under the water the sky. The lobe is not clipped by the surface, and there
-// is no Fresnel factor.
+// pool's probe (render/glossy_probes); the walls under the water the sky.
+// The lobe is not clipped by the surface, and there is no Fresnel factor.
 //
 // The prefiltered map is an equirectangular mip chain: level k, W_k = W_0 / 2^k
 // texels wide, holds G for the exponent whose lobe is kGlossyTexelsPerLobe of
@@ -61,9 +61,9 @@ TP_INLINE vec3 glossyProbeEye(vec3 center, float radius, float waterY) {
 }
 
 // The direction from a glossy sphere's probe's eye (glossyProbeEye) in which
-// the probe holds what the mirror ray from p on its surface along unit r meets: where r goes up,
-// r (the sky and what stands over the ground are far, seen alike from the
-// centre); where it goes down, the direction to where it meets the ground's
+// the probe holds what the mirror ray from p on its surface along unit r
+// meets: where r goes up, r (the sky and what stands over the ground are
+// far, seen alike from the eye); where it goes down, the direction to where it meets the ground's
 // plane at groundY or, through the pool's opening (holeHalf, 0 for none),
 // the water's rest level at waterY. Under the water, r.
 TP_INLINE vec3 glossyProbeDirection(vec3 center, vec3 p, vec3 r, float groundY, float holeHalf, float waterY) {

@@ -104,9 +104,9 @@ void GlossyProbes::declare(FrameGraph& graph, const FrameInputs& in, const PoolD
 void GlossyProbes::update(FrameGraph& graph, const shader::FrameUniforms& frame, const scene::Scene& placed) {
   if (probes_.empty()) return;
   bool changed = false;
+  const float waterY = hasPool(placed) ? placed.water.level : -std::numeric_limits<float>::infinity();
   for (size_t p = 0; p < probes_.size(); ++p) {
     const size_t sphere = probes_[p].sphere;
-    const float waterY = hasPool(placed) ? placed.water.level : -std::numeric_limits<float>::infinity();
     const glm::vec4 centre = sphere == kPool
                                  ? poolCentre_
                                  : glm::vec4(shader::glossyProbeEye(placed.spheres.at(sphere).center,

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "render/glossy_probes.hpp"
-
 #include "render/pool.hpp"
 #include "render/surfaces.hpp"
 #include "shared/objects.h"

@@ -245,10 +245,12 @@ struct Renderer::Resources {
 
   // The objects where they are at `time`, those in view for the passes that
   // draw them (all of them stay in the objects the water's rays meet: a
-  // reflection shows what the frame does not).
-  void placeObjects(const scene::Scene& scene, float time, const glm::mat4& viewProjection, unsigned glassSteps) {
+  // reflection shows what the frame does not), and the glossy probes' eyes
+  // and light (`frame`'s).
+  void placeObjects(const scene::Scene& scene, float time, const shader::FrameUniforms& frame, unsigned glassSteps) {
     const scene::Scene placed = scene::sceneAt(scene, time);
-    const Frustum frustum(viewProjection);
+    glossyProbes.update(graph, frame, placed);
+    const Frustum frustum(frame.viewProjection);
     opaqueInView = {};
     aovInView = {};
     glassInView.clear();
@@ -521,8 +523,7 @@ RenderedFrame Renderer::render(const FrameRequest& request) {
       res_->graph.touch(state);  // uploaded outside the graph
   }
   // Spheres with a path are where the path puts them at this frame's time.
-  res_->placeObjects(scene_, time, uniforms.viewProjection, scene_.render.glassSearchSteps);
-  if (!res_->glossyProbes.empty()) res_->glossyProbes.update(res_->graph, uniforms, scene::sceneAt(scene_, time));
+  res_->placeObjects(scene_, time, uniforms, scene_.render.glassSearchSteps);
   res_->geometry = opaqueGeometry(uniforms, res_->opaqueInView, res_->pool ? res_->pool->floorStep() : 1u);
   res_->aoReadback = request.ao;
   const std::vector<ResourceRef> requested = res_->requestedOutputs(request);
