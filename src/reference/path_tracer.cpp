@@ -12,7 +12,7 @@
 #include "reference/camera_rays.hpp"
 #include "reference/environment_light.hpp"
 #include "reference/path_bsdf.hpp"
-#include "reference/path_random.hpp"
+#include "reference/path_sampler.hpp"
 #include "reference/reference_caustics.hpp"
 #include "reference/reference_scene.hpp"
 #include "shading/frame_uniforms.hpp"
@@ -161,7 +161,7 @@ class PathTracer {
 
   // The radiance reaching the camera along origin + s dir, starting in
   // `medium`; `first` receives the first surface met, if any.
-  glm::vec3 cameraPath(glm::vec3 origin, glm::vec3 dir, Medium medium, PathRandom& random) const {
+  glm::vec3 cameraPath(glm::vec3 origin, glm::vec3 dir, Medium medium, PathSampler& sampler) const {
     glm::vec3 radiance(0.0f), throughput(1.0f);
     PathState state;
     std::optional<float> firstDistance;
@@ -174,7 +174,7 @@ class PathTracer {
         if (!hit.hit()) break;  // out of the pool's water through a crack: nothing to add
         if (scatters()) {
           const float mean = (extinction_.x + extinction_.y + extinction_.z) / 3.0f;
-          const float s = -std::log1p(-random.uniform()) / mean;
+          const float s = -std::log1p(-sampler.uniform()) / mean;
           if (s < hit.distance) {
             throughput *= scattering_ * glm::exp(-extinction_ * s) / (mean * std::exp(-mean * s));
             origin += s * dir;
@@ -183,12 +183,12 @@ class PathTracer {
               return shader::henyeyGreenstein(glm::dot(-toLight, -wo), anisotropy_);
             };
             auto response = [&](glm::vec3 toLight) { return glm::vec3(phase(toLight)); };
-            radiance += throughput *
-                        (sunThroughWater(origin, random, response) + skyThroughWater(origin, random, response, phase));
-            const glm::vec3 next = sampleHenyeyGreenstein(dir, anisotropy_, random.uniform2());
+            radiance += throughput * (sunThroughWater(origin, sampler, response) +
+                                      skyThroughWater(origin, sampler, response, phase));
+            const glm::vec3 next = sampleHenyeyGreenstein(dir, anisotropy_, sampler.uniform2());
             state = PathState{true, shader::henyeyGreenstein(glm::dot(next, dir), anisotropy_), true, 0, 0};
             dir = next;
-            if (!roulette(bounce, throughput, random)) break;
+            if (!roulette(bounce, throughput, sampler)) break;
             continue;
           }
           throughput *= glm::exp(-extinction_ * hit.distance) / std::exp(-mean * hit.distance);
@@ -202,17 +202,17 @@ class PathTracer {
       }
       switch (hit.surface) {
         case Surface::Water:
-          waterInterface(hit, origin, dir, medium, throughput, state, random);
+          waterInterface(hit, origin, dir, medium, throughput, state, sampler);
           break;
         case Surface::GlassSphere:
         case Surface::GlassBox:
-          glassInterface(hit, origin, dir, medium, throughput, state, random);
+          glassInterface(hit, origin, dir, medium, throughput, state, sampler);
           break;
         default:
-          if (!diffuseVertex(hit, origin, dir, medium, throughput, radiance, state, random)) bounce = maxBounces_;
+          if (!diffuseVertex(hit, origin, dir, medium, throughput, radiance, state, sampler)) bounce = maxBounces_;
           break;
       }
-      if (!roulette(bounce, throughput, random)) break;
+      if (!roulette(bounce, throughput, sampler)) break;
     }
     if (!inAirAtStart) return radiance;
     return seenThroughHaze(radiance, eyeDir, firstDistance.value_or(std::numeric_limits<float>::infinity()),
@@ -283,11 +283,11 @@ class PathTracer {
 
   bool underTheSurface(glm::vec3 p) const { return underTheWaterSurface(surfaceOnly_.get(), poolHalf_, p); }
 
-  bool roulette(uint32_t bounce, glm::vec3& throughput, PathRandom& random) const {
+  bool roulette(uint32_t bounce, glm::vec3& throughput, PathSampler& sampler) const {
     if (largest(throughput) <= 0.0f) return false;
     if (bounce < kRouletteAfter) return true;
     const float keep = std::min(largest(throughput), kRouletteMaxKeep);
-    if (random.uniform() >= keep) return false;
+    if (sampler.uniform() >= keep) return false;
     throughput /= keep;
     return true;
   }
@@ -313,7 +313,7 @@ class PathTracer {
 
   // The water's surface: reflected or refracted by exact Fresnel, chosen by it.
   void waterInterface(const PathHit& hit, glm::vec3& origin, glm::vec3& dir, Medium& medium, glm::vec3& throughput,
-                      PathState& state, PathRandom& random) const {
+                      PathState& state, PathSampler& sampler) const {
     const glm::vec3 up = hit.geometric.y < 0.0f ? -hit.geometric : hit.geometric;
     const bool fromAbove = glm::dot(dir, up) < 0.0f;
     const Medium before = fromAbove ? Medium::Air : Medium::Water;
@@ -325,7 +325,7 @@ class PathTracer {
     }
     const float n1 = fromAbove ? 1.0f : waterIor_, n2 = fromAbove ? waterIor_ : 1.0f;
     const float reflectance = shader::fresnelDielectric(cosI, n1, n2);
-    const bool refracted = random.uniform() >= reflectance;
+    const bool refracted = sampler.uniform() >= reflectance;
     dir = refracted ? glm::normalize(glm::refract(dir, n, n1 / n2)) : glm::normalize(glm::reflect(dir, n));
     const bool below = glm::dot(dir, up) < 0.0f;
     medium = below ? Medium::Water : Medium::Air;
@@ -340,7 +340,7 @@ class PathTracer {
 
   // A glass sphere's or box's surface, met from outside or inside.
   void glassInterface(const PathHit& hit, glm::vec3& origin, glm::vec3& dir, Medium& medium, glm::vec3& throughput,
-                      PathState& state, PathRandom& random) const {
+                      PathState& state, PathSampler& sampler) const {
     const glm::vec3 out = outward(hit);
     const bool entering = glm::dot(dir, out) < 0.0f;
     const Medium around = underTheSurface(hit.position) ? Medium::Water : Medium::Air;
@@ -350,7 +350,7 @@ class PathTracer {
     const glm::vec3 n = entering ? out : -out;
     const float cosI = std::max(-glm::dot(dir, n), 0.0f);
     const float reflectance = shader::fresnelDielectric(cosI, n1, n2);
-    const bool refracted = random.uniform() >= reflectance;
+    const bool refracted = sampler.uniform() >= reflectance;
     dir = refracted ? glm::normalize(glm::refract(dir, n, n1 / n2)) : glm::normalize(glm::reflect(dir, n));
     const bool inside = glm::dot(dir, out) < 0.0f;
     if (inside != !entering) throughput *= (n1 / n2) * (n1 / n2);
@@ -418,10 +418,10 @@ class PathTracer {
   // The sun at a point in the water: one point of its disc refracted down
   // to p, times the waves' focusing (caustics_).
   template <typename Response>
-  glm::vec3 sunThroughWater(glm::vec3 p, PathRandom& random, Response response) const {
+  glm::vec3 sunThroughWater(glm::vec3 p, PathSampler& sampler, Response response) const {
     if (!env_.hasSun()) return glm::vec3(0.0f);
     glm::vec3 toLight;
-    const glm::vec3 light = refractedLight(p, env_.sampleSun(random.uniform2()), response, toLight);
+    const glm::vec3 light = refractedLight(p, env_.sampleSun(sampler.uniform2()), response, toLight);
     const float focus = caustics_ ? caustics_->at(shader::causticsLine(pool_, env_.sunDirection(), p)) : 1.0f;
     return light * focus;
   }
@@ -432,9 +432,9 @@ class PathTracer {
   // (`pdf(toLight)`: their density). Nothing under waves, where those paths
   // alone find the sky.
   template <typename Response, typename Pdf>
-  glm::vec3 skyThroughWater(glm::vec3 p, PathRandom& random, Response response, Pdf pdf) const {
+  glm::vec3 skyThroughWater(glm::vec3 p, PathSampler& sampler, Response response, Pdf pdf) const {
     if (!flatWater_) return glm::vec3(0.0f);
-    const LightSample s = env_.sampleSky(random.uniform2());
+    const LightSample s = env_.sampleSky(sampler.uniform2());
     glm::vec3 toLight;
     const glm::vec3 light = refractedLight(p, s, response, toLight);
     if (largest(light) <= 0.0f) return glm::vec3(0.0f);
@@ -454,19 +454,19 @@ class PathTracer {
   // and the sky, in the water the sun through the surface), then a direction
   // from its BSDF. False ends the path.
   bool diffuseVertex(const PathHit& hit, glm::vec3& origin, glm::vec3& dir, Medium medium, glm::vec3& throughput,
-                     glm::vec3& radiance, PathState& state, PathRandom& random) const {
+                     glm::vec3& radiance, PathState& state, PathSampler& sampler) const {
     const SurfaceBsdf m = material(hit);
     const glm::vec3 wo = -dir, n = hit.shading;
     const glm::vec3 p = hit.position + kSurfaceOffset * hit.geometric;
     if (medium == Medium::Air) {
       if (env_.hasSun()) {
-        const LightSample s = env_.sampleSun(random.uniform2());
+        const LightSample s = env_.sampleSun(sampler.uniform2());
         const glm::vec3 f = bsdfTimesCosine(m, n, wo, s.direction);
         if (largest(f) > 0.0f && glm::dot(s.direction, hit.geometric) > 0.0f &&
             !blocked(p, s.direction, std::numeric_limits<float>::infinity(), false))
           radiance += throughput * f * s.radiance / s.pdf * powerHeuristic(s.pdf, bsdfPdf(m, n, wo, s.direction));
       }
-      const LightSample s = env_.sampleSky(random.uniform2());
+      const LightSample s = env_.sampleSky(sampler.uniform2());
       if (s.pdf > 0.0f) {
         const glm::vec3 f = bsdfTimesCosine(m, n, wo, s.direction);
         if (largest(f) > 0.0f && glm::dot(s.direction, hit.geometric) > 0.0f &&
@@ -477,12 +477,12 @@ class PathTracer {
       auto response = [&](glm::vec3 toLight) {
         return glm::dot(toLight, hit.geometric) > 0.0f ? bsdfTimesCosine(m, n, wo, toLight) : glm::vec3(0.0f);
       };
-      radiance += throughput *
-                  (sunThroughWater(p, random, response) +
-                   skyThroughWater(p, random, response, [&](glm::vec3 toLight) { return bsdfPdf(m, n, wo, toLight); }));
+      radiance += throughput * (sunThroughWater(p, sampler, response) +
+                                skyThroughWater(p, sampler, response,
+                                                [&](glm::vec3 toLight) { return bsdfPdf(m, n, wo, toLight); }));
     }
-    const glm::vec2 u = random.uniform2();
-    const BsdfSample b = sampleBsdf(m, n, wo, glm::vec3(u, random.uniform()));
+    const glm::vec2 u = sampler.uniform2();
+    const BsdfSample b = sampleBsdf(m, n, wo, glm::vec3(u, sampler.uniform()));
     if (b.pdf <= 0.0f || glm::dot(b.wi, hit.geometric) <= 0.0f) return false;
     throughput *= b.weight;
     state = PathState{true, b.pdf, medium == Medium::Water, 0, 0};
@@ -537,10 +537,10 @@ PathTracedFrame renderPathTraced(const scene::Scene& scene, const sim::WaterStat
       for (uint32_t x = 0; x < width; ++x) {
         const size_t k = size_t(y) * width + x;
         for (uint32_t s = done; s < end; ++s) {
-          PathRandom random(k, s, options.seed);
-          const glm::vec2 point = random.uniform2();
+          PathSampler sampler(k, s, options.seed);
+          const glm::vec2 point = sampler.uniform2();
           const CameraRay ray = rays.at(float(x) + point.x, float(y) + point.y);
-          const glm::vec3 l = tracer.cameraPath(ray.origin, ray.direction, cameraMediumNow, random);
+          const glm::vec3 l = tracer.cameraPath(ray.origin, ray.direction, cameraMediumNow, sampler);
           if (std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z)) sum[k] += glm::dvec3(l);
         }
       }

@@ -3,9 +3,10 @@
 
     python3 tests/cycles/cycles_test.py --tidepool build/tidepool --outdir build/tests/cycles
 
-For each scene: the reference's difference from Cycles with both estimates'
-noise taken out (in quadrature) within BOUND, and the difference itself within
-their noise (NOISE_FACTOR times the combined noise, plus FLOOR); the
+For each scene: the reference's difference from Cycles within BOUND (the
+noise included; what is left with both estimates' noise taken out in
+quadrature is printed), and within their noise (NOISE_FACTOR times the
+combined noise, plus FLOOR); the
 raster's distance to Cycles printed, and held to RASTER_BOUND for the scenes
 listed in raster_passing.txt. The figures are printed; any bound not met fails.
 Conventions and the reasons for the numbers: docs/testing.md, "Against Blender Cycles".
@@ -112,10 +113,10 @@ def main():
         e = f["reference_vs_cycles"]
         # The noise adds in quadrature to the systematic difference: what is left of it.
         systematic = math.sqrt(max(0.0, e * e - noise * noise))
-        ok_bound, ok_noise = systematic <= BOUND, e <= within
+        ok_bound, ok_noise = e <= BOUND, e <= within
         raster_checked = name in passing
         ok_raster = f["raster_vs_cycles"] <= RASTER_BOUND or not raster_checked
-        print(f"  reference vs Cycles {e:.4f}, noise taken out {systematic:.4f}: <= {BOUND} {'yes' if ok_bound else 'NO'}; "
+        print(f"  reference vs Cycles {e:.4f} <= {BOUND} {'yes' if ok_bound else 'NO'} (noise taken out {systematic:.4f}); "
               f"<= {NOISE_FACTOR:g} x noise {noise:.4f} + {FLOOR} = {within:.4f} {'yes' if ok_noise else 'NO'}; "
               f"raster {f['raster_vs_cycles']:.4f} <= {RASTER_BOUND} "
               + (("yes" if ok_raster else "NO") if raster_checked else "(reported only)"), flush=True)
