@@ -95,6 +95,7 @@ struct PathState {
   float lastPdf = 0.0f;                                   // the density its BSDF drew the path's direction with
   bool lastInWater = false;                               // it lay in the water (the sun then reached it by refraction)
   uint32_t specularSince = 0, waterRefractionsSince = 0;  // interfaces crossed or reflected off since
+  uint32_t waterReflectionsSince = 0;                     // reflections off the water's surface from above since
 };
 
 class PathTracer {
@@ -186,7 +187,7 @@ class PathTracer {
             radiance += throughput * (sunThroughWater(origin, sampler, response) +
                                       skyThroughWater(origin, sampler, response, phase));
             const glm::vec3 next = sampleHenyeyGreenstein(dir, anisotropy_, sampler.uniform2());
-            state = PathState{true, shader::henyeyGreenstein(glm::dot(next, dir), anisotropy_), true, 0, 0};
+            state = PathState{true, shader::henyeyGreenstein(glm::dot(next, dir), anisotropy_), true, 0, 0, 0};
             dir = next;
             if (!roulette(bounce, throughput, sampler)) break;
             continue;
@@ -305,6 +306,10 @@ class PathTracer {
     // under flat water the sky skyThroughWater's too, weighed against it.
     if (state.lastInWater && state.specularSince == 1 && state.waterRefractionsSince == 1)
       return flatWater_ ? sky * powerHeuristic(state.lastPdf, skyPdfInWater(dir)) : sky;
+    // Off the flat water by one reflection from the air: the sun is
+    // sunMirroredByWater's too, weighed against it.
+    if (flatWater_ && !state.lastInWater && state.specularSince == 1 && state.waterReflectionsSince == 1)
+      return sky + sun * powerHeuristic(state.lastPdf, env_.sunPdf());
     return sky + sun;
   }
 
@@ -333,6 +338,8 @@ class PathTracer {
       const float ratio = indexAt(before) / indexAt(medium);
       throughput *= ratio * ratio;
       if (refracted) ++state.waterRefractionsSince;
+    } else if (fromAbove) {
+      ++state.waterReflectionsSince;
     }
     ++state.specularSince;
     origin = hit.position + (below ? -kSurfaceOffset : kSurfaceOffset) * up;
@@ -450,8 +457,34 @@ class PathTracer {
     return env_.skyPdf(air) * waterIor_ * waterIor_ * std::sqrt(1.0f - sin2Water) / air.y;
   }
 
-  // A Lambertian or glossy surface: its light samples (in the air the sun
-  // and the sky, in the water the sun through the surface), then a direction
+  // The sun mirrored by the flat water at p in the air: one point of its
+  // disc, reflected where the line from p meets the surface at the rest
+  // level, times Fresnel's reflectance (the mirror keeps the disc's solid
+  // angle), weighed by the power heuristic against the paths that reach the
+  // sun by that one reflection. Without it those paths alone found it: the
+  // reflected sun on the walls above the water, a disc's worth of light
+  // drawn by a wide lobe, was the truth's fireflies. Nothing under waves,
+  // whose focusing of the reflection no map here holds; the paths find it.
+  glm::vec3 sunMirroredByWater(glm::vec3 p, const PathHit& hit, const SurfaceBsdf& m, glm::vec3 wo,
+                               PathSampler& sampler) const {
+    if (!flatWater_ || waterMesh_ < 0 || !env_.hasSun()) return glm::vec3(0.0f);
+    const LightSample s = env_.sampleSun(sampler.uniform2());
+    if (s.pdf <= 0.0f || s.direction.y <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 mirrored(s.direction.x, -s.direction.y, s.direction.z);
+    if (glm::dot(mirrored, hit.geometric) <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 f = bsdfTimesCosine(m, hit.shading, wo, mirrored);
+    if (largest(f) <= 0.0f) return glm::vec3(0.0f);
+    const ReferenceHit water = bvh_->intersect(p, mirrored, 0.0f);
+    if (!water.hit() || water.mesh != waterMesh_ || water.sphere >= 0) return glm::vec3(0.0f);
+    const glm::vec3 onWater = p + water.distance * mirrored + glm::vec3(0.0f, kSurfaceOffset, 0.0f);
+    if (blocked(onWater, s.direction, std::numeric_limits<float>::infinity(), false)) return glm::vec3(0.0f);
+    const float reflectance = shader::fresnelDielectric(s.direction.y, 1.0f, waterIor_);
+    return f * s.radiance / s.pdf * reflectance * powerHeuristic(s.pdf, bsdfPdf(m, hit.shading, wo, mirrored));
+  }
+
+  // A Lambertian or glossy surface: its light samples (in the air the sun,
+  // the sun mirrored by the flat water and the sky, in the water the sun
+  // through the surface), then a direction
   // from its BSDF. False ends the path.
   bool diffuseVertex(const PathHit& hit, glm::vec3& origin, glm::vec3& dir, Medium medium, glm::vec3& throughput,
                      glm::vec3& radiance, PathState& state, PathSampler& sampler) const {
@@ -466,6 +499,7 @@ class PathTracer {
             !blocked(p, s.direction, std::numeric_limits<float>::infinity(), false))
           radiance += throughput * f * s.radiance / s.pdf * powerHeuristic(s.pdf, bsdfPdf(m, n, wo, s.direction));
       }
+      radiance += throughput * sunMirroredByWater(p, hit, m, wo, sampler);
       const LightSample s = env_.sampleSky(sampler.uniform2());
       if (s.pdf > 0.0f) {
         const glm::vec3 f = bsdfTimesCosine(m, n, wo, s.direction);
@@ -485,7 +519,7 @@ class PathTracer {
     const BsdfSample b = sampleBsdf(m, n, wo, glm::vec3(u, sampler.uniform()));
     if (b.pdf <= 0.0f || glm::dot(b.wi, hit.geometric) <= 0.0f) return false;
     throughput *= b.weight;
-    state = PathState{true, b.pdf, medium == Medium::Water, 0, 0};
+    state = PathState{true, b.pdf, medium == Medium::Water, 0, 0, 0};
     origin = p;
     dir = b.wi;
     return true;
