@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "cli/frame_samples.hpp"
+#include "exact_fresnel.hpp"
 #include "gpu_test.hpp"
 #include "reference/reference_caustics.hpp"
 #include "reference/reference_tracer.hpp"
@@ -95,6 +96,52 @@ TEST(ReferenceCaustics, WavesGatherLightWithoutMakingOrLosingIt) {
   EXPECT_NEAR(sum / double(n), 1.0, 0.01);
   EXPECT_GT(hi, 1.3f);
   EXPECT_LT(lo, 0.8f);
+}
+
+// The sun's image in the water on the walls above it: flat water leaves
+// each mirror point its own light (ratio 1); water whose every normal is
+// tilted by the same angle sends the sun's image off as a parallel beam,
+// which lands on the wall facing the sun stretched along x by the factor k
+// worked out here from the reflected direction (the mirror point moves k
+// times as far as the photon's lattice point), each photon weighted by its
+// Fresnel reflectance over the flat water's: the ratio over the texels the
+// wall's band takes is that weight over k.
+TEST(ReferenceCaustics, ATiltedMirrorStretchesTheSunsImageOnTheWall) {
+  scene::Scene s = flatFloor(30.0f);
+  s.sky.sunAzimuthDegrees = 0.0f;  // towards +x: the image lands on the wall at x = -extent/2
+  s.water.level = -0.6f;
+  const sim::WaterState flat = sim::flatState(s.water.grid);
+  Pool pool = poolOf(s, flat);
+  const glm::vec3 toSun = render::sunDirection(s.sky);
+  const float wall = -0.5f * s.water.extent, band = s.ground.height - s.water.level;
+  const float reach = band * toSun.y > 0.0f ? band * std::sqrt(1.0f - toSun.y * toSun.y) / toSun.y : 0.0f;
+  for (const float tilt : {0.0f, 0.06f}) {
+    const glm::vec3 n(std::sin(tilt), std::cos(tilt), 0.0f);
+    std::fill(pool.normals.begin(), pool.normals.end(), n);
+    const render::CausticsMap map = render::traceReflectedCaustics(s, pool.water, pool.normals, pool.receivers, kSize);
+    const glm::vec3 r = glm::reflect(-toSun, n);
+    const double k = double(r.y) * toSun.x / (double(toSun.y) * -r.x);
+    const double weight = fresnelFromAir(glm::dot(toSun, n), s.water.ior) / fresnelFromAir(toSun.y, s.water.ior);
+    // The texels whose mirror points the band takes, 0.15 m clear of its ends and the side walls.
+    const float texel = s.water.extent / float(kSize);
+    double sum = 0.0;
+    size_t count = 0;
+    for (uint32_t z = 0; z < kSize; ++z) {
+      for (uint32_t x = 0; x < kSize; ++x) {
+        const float qx = wall + (float(x) + 0.5f) * texel, qz = wall + (float(z) + 0.5f) * texel;
+        if (qx < wall + 0.15f || qx > wall + reach - 0.15f || std::abs(qz) > -wall - 0.15f) continue;
+        const float ratio = map.ratio[size_t(z) * kSize + x];
+        if (tilt == 0.0f) EXPECT_EQ(ratio, 1.0f) << x << "," << z;
+        sum += ratio;
+        ++count;
+      }
+    }
+    const double expected = weight / k;
+    std::printf("tilt %.2f: %zu texels, mean ratio %.4f, exact %.4f (k %.4f, Fresnel's weight %.4f)\n", tilt, count,
+                sum / double(count), expected, k, weight);
+    EXPECT_GT(count, 1000u);
+    EXPECT_NEAR(sum / double(count) / expected, 1.0, 0.01);
+  }
 }
 
 class CausticsReferenceGpuTest : public GpuTest {};

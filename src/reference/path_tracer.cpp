@@ -154,6 +154,8 @@ class PathTracer {
         for (const scene::Sphere& sphere : spheres_)
           if (!scene::isGlass(sphere)) receivers.spheres.push_back(sphere);
         caustics_ = traceCaustics(scene, surface->mesh, surface->normals, receivers, kCausticsSize);
+        if (!flatWater_)
+          reflections_ = traceReflectedCaustics(scene, surface->mesh, surface->normals, receivers, kCausticsSize);
       }
     }
     bvh_ = std::make_unique<ReferenceScene>(traced, spheres_);
@@ -306,10 +308,11 @@ class PathTracer {
     // under flat water the sky skyThroughWater's too, weighed against it.
     if (state.lastInWater && state.specularSince == 1 && state.waterRefractionsSince == 1)
       return flatWater_ ? sky * powerHeuristic(state.lastPdf, skyPdfInWater(dir)) : sky;
-    // Off the flat water by one reflection from the air: the sun is
-    // sunMirroredByWater's too, weighed against it.
-    if (flatWater_ && !state.lastInWater && state.specularSince == 1 && state.waterReflectionsSince == 1)
-      return sky + sun * powerHeuristic(state.lastPdf, env_.sunPdf());
+    // Off the water by one reflection from the air: the sun is
+    // sunMirroredByWater's, under flat water weighed against it.
+    if (!state.lastInWater && state.specularSince == 1 && state.waterReflectionsSince == 1 &&
+        (flatWater_ || reflections_))
+      return sky + (flatWater_ ? sun * powerHeuristic(state.lastPdf, env_.sunPdf()) : glm::vec3(0.0f));
     return sky + sun;
   }
 
@@ -457,29 +460,34 @@ class PathTracer {
     return env_.skyPdf(air) * waterIor_ * waterIor_ * std::sqrt(1.0f - sin2Water) / air.y;
   }
 
-  // The sun mirrored by the flat water at p in the air: one point of its
-  // disc, reflected where the line from p meets the surface at the rest
-  // level, times Fresnel's reflectance (the mirror keeps the disc's solid
-  // angle), weighed by the power heuristic against the paths that reach the
-  // sun by that one reflection. Without it those paths alone found it: the
-  // reflected sun on the walls above the water, a disc's worth of light
-  // drawn by a wide lobe, was the truth's fireflies. Nothing under waves,
-  // whose focusing of the reflection no map here holds; the paths find it.
+  // The sun mirrored by the water at p in the air: one point of its disc,
+  // reflected where the line from p meets the rest level, times Fresnel's
+  // reflectance there (the mirror keeps the disc's solid angle). Under
+  // flat water it is weighed by the power heuristic against the paths that
+  // reach the sun by that one reflection; under waves it is multiplied by
+  // the waves' focusing (reflections_, light-traced) and those paths are
+  // not counted. Without it those paths alone found it: the sun's image on
+  // the walls above the water, a disc's worth of light drawn by a wide
+  // lobe, was the truth's fireflies.
   glm::vec3 sunMirroredByWater(glm::vec3 p, const PathHit& hit, const SurfaceBsdf& m, glm::vec3 wo,
                                PathSampler& sampler) const {
-    if (!flatWater_ || waterMesh_ < 0 || !env_.hasSun()) return glm::vec3(0.0f);
+    if ((!flatWater_ && !reflections_) || waterMesh_ < 0 || !env_.hasSun() || p.y <= level_) return glm::vec3(0.0f);
     const LightSample s = env_.sampleSun(sampler.uniform2());
     if (s.pdf <= 0.0f || s.direction.y <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 mirrored(s.direction.x, -s.direction.y, s.direction.z);
     if (glm::dot(mirrored, hit.geometric) <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 f = bsdfTimesCosine(m, hit.shading, wo, mirrored);
     if (largest(f) <= 0.0f) return glm::vec3(0.0f);
-    const ReferenceHit water = bvh_->intersect(p, mirrored, 0.0f);
-    if (!water.hit() || water.mesh != waterMesh_ || water.sphere >= 0) return glm::vec3(0.0f);
-    const glm::vec3 onWater = p + water.distance * mirrored + glm::vec3(0.0f, kSurfaceOffset, 0.0f);
-    if (blocked(onWater, s.direction, std::numeric_limits<float>::infinity(), false)) return glm::vec3(0.0f);
+    const float toWater = (p.y - level_) / s.direction.y;
+    const glm::vec3 onWater = p + toWater * mirrored;
+    if (std::abs(onWater.x) >= poolHalf_ || std::abs(onWater.z) >= poolHalf_) return glm::vec3(0.0f);
+    if (blocked(p, mirrored, toWater, true) ||
+        blocked(onWater, s.direction, std::numeric_limits<float>::infinity(), true))
+      return glm::vec3(0.0f);
     const float reflectance = shader::fresnelDielectric(s.direction.y, 1.0f, waterIor_);
-    return f * s.radiance / s.pdf * reflectance * powerHeuristic(s.pdf, bsdfPdf(m, hit.shading, wo, mirrored));
+    const glm::vec3 light = f * s.radiance / s.pdf * reflectance;
+    if (flatWater_) return light * powerHeuristic(s.pdf, bsdfPdf(m, hit.shading, wo, mirrored));
+    return light * reflections_->at(mirrorPoint(p, env_.sunDirection(), level_));
   }
 
   // A Lambertian or glossy surface: its light samples (in the air the sun,
@@ -541,7 +549,7 @@ class PathTracer {
   std::vector<scene::Sphere> spheres_;
   int waterMesh_ = -1;
   std::vector<glm::vec3> waterNormals_;
-  std::optional<CausticsMap> caustics_;
+  std::optional<CausticsMap> caustics_, reflections_;
   std::unique_ptr<ReferenceScene> surfaceOnly_, bvh_;
 };
 

@@ -41,8 +41,13 @@ struct PathTracedFrame {
 // the disc's solid angle compressed, absorption on the way down, and the
 // focusing of the waves from light tracing (reference_caustics); paths that
 // reach the sun by one refraction out of the water are that estimator's and
-// are not counted twice. The AOVs are those of the surface at each pixel's
-// centre.
+// are not counted twice. In the air the sun's image in the water is a light
+// too: mirrored at the rest level, times Fresnel's reflectance, under flat
+// water weighed against the paths that reach the sun by one reflection off
+// it, under waves times their focusing of it (light-traced too) with those
+// paths not counted. Samples come from a scrambled Sobol sequence
+// (reference/path_sampler.hpp). The AOVs are those of the surface at each
+// pixel's centre.
 PathTracedFrame renderPathTraced(const scene::Scene& scene, const sim::WaterState* water, uint32_t frame,
                                  uint32_t width, uint32_t height, const PathTracerOptions& options);
 

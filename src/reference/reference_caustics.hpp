@@ -56,4 +56,22 @@ CausticsMap traceCaustics(const scene::Scene& scene, const scene::Mesh& water,
                           const std::vector<glm::vec3>& waterNormals, const CausticReceivers& receivers, uint32_t size,
                           uint32_t photonsPerTexelSide = kCausticPhotonsPerTexelSide);
 
+// The sun's reflection by the water's surface in the air, relative to flat
+// water, by light tracing: the same photons, reflected by the mesh's
+// interpolated normals, go on to what they meet first above it (`receivers`:
+// the walls above the water, the boxes, the opaque spheres). Each counts at
+// its landing point's mirror point (mirrorPoint: where the line from it
+// towards the sun's image in the flat water meets the rest level), weighted
+// by its Fresnel reflectance over the flat water's at the sun's angle. A
+// point in the air lit by the sun's image through mirror point q takes the
+// flat water's light times the ratio at q. Under flat water every photon
+// counts at its own lattice point at weight 1. `reach` is the pool's half.
+CausticsMap traceReflectedCaustics(const scene::Scene& scene, const scene::Mesh& water,
+                                   const std::vector<glm::vec3>& waterNormals, const CausticReceivers& receivers,
+                                   uint32_t size, uint32_t photonsPerTexelSide = kCausticPhotonsPerTexelSide);
+
+// Where the line from p towards the sun's image in flat water at `level`
+// (direction toSun mirrored, going down) meets that level, in xz.
+glm::vec2 mirrorPoint(glm::vec3 p, glm::vec3 toSun, float level);
+
 }  // namespace tp::render
